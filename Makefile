@@ -1,0 +1,82 @@
+# casteljau: the two README commands (`make demo`, `make test`) and the others.
+# On a fresh Debian 12 machine every target first installs what is missing:
+# with apt-get when run as root, else it prints the one apt-get line and stops.
+# Python is always Debian's /usr/bin/python3 (the python3 first on PATH has no numpy).
+
+SHELL := /bin/bash
+PYTHON := /usr/bin/python3
+JOBS ?= $(shell nproc)
+export NODE_PATH := /usr/share/nodejs
+
+# Build, test and demo dependencies (Debian package names).
+PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark-dev \
+  librapidcheck-dev libgmp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev \
+  libcairo2-dev poppler-utils emscripten python3-dev python3-numpy python3-scipy \
+  python3-matplotlib python3-pytest python3-hypothesis
+# Peers measured beside casteljau by `make bench`.
+BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
+  libtbb-dev libsisl-dev lib2geom-dev libgsl-dev libboost-dev
+
+CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON)
+ifeq ($(CI),true)
+  CMAKE_FLAGS += -DCASTELJAU_WERROR=ON
+endif
+
+.PHONY: all deps bench-deps build asan wasm test demo bench clean
+
+all: build
+
+# Installs the missing packages of $(1) (apt-get as root, else prints the line).
+define install_missing
+	@missing=$$(for p in $(1); do dpkg-query -W -f='$${Status}\n' "$$p" 2>/dev/null | grep -q '^install ok installed' || echo "$$p"; done); \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ]; then \
+	    echo "installing:" $$missing; \
+	    apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $$missing; \
+	  else \
+	    echo "missing Debian packages; install them with:"; \
+	    echo "  sudo apt-get install -y --no-install-recommends" $$missing; exit 1; \
+	  fi; \
+	fi
+endef
+
+deps:
+	$(call install_missing,$(PACKAGES))
+
+bench-deps: deps
+	$(call install_missing,$(BENCH_PACKAGES))
+
+build: deps
+	cmake --preset default $(CMAKE_FLAGS) >/dev/null
+	cmake --build --preset default -j $(JOBS)
+
+asan: deps
+	cmake --preset asan $(CMAKE_FLAGS) >/dev/null
+	cmake --build --preset asan -j $(JOBS)
+
+# The core library with Debian's em++ (keeps it inside the C++ subset em++ accepts).
+wasm: deps
+	cmake --preset wasm >/dev/null
+	cmake --build --preset wasm -j $(JOBS)
+
+test: build asan wasm
+	@echo "== C++ tests (build/) =="
+	cd build && ctest --output-on-failure -j $(JOBS)
+	@echo "== C++ tests under AddressSanitizer + UBSan (build-asan/) =="
+	cd build-asan && ctest --output-on-failure -j $(JOBS)
+	@echo "== core library built with em++, run under node (build-wasm/) =="
+	cd build-wasm && ctest --output-on-failure
+	@echo "make test: all test suites passed (C++, sanitizers, em++ core)"
+
+demo: build
+	rm -rf out/gallery.tmp && ./build/casteljau gallery out/gallery.tmp
+	rm -rf out/gallery && mv out/gallery.tmp out/gallery
+	@echo "make demo: gallery written to out/gallery/index.html ($$(ls out/gallery/*.svg | wc -l) SVG, $$(ls out/gallery/*.png | wc -l) PNG)"
+
+bench: bench-deps
+	cmake --preset bench $(CMAKE_FLAGS) >/dev/null
+	cmake --build --preset bench -j $(JOBS)
+	bash bench/run.sh
+
+clean:
+	rm -rf build build-asan build-wasm build-bench out

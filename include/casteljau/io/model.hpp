@@ -1,0 +1,43 @@
+#pragma once
+// Model: a curve or surface whose kind is chosen at run time (model JSON, the
+// CLI, the playground), and what every front end needs to do with one
+// without knowing its kind. The only std::variant of the library (style rule 1).
+
+#include <span>
+#include <variant>
+#include <vector>
+
+#include "casteljau/bezier/bezier_curve.hpp"
+#include "casteljau/bezier/piecewise_bezier.hpp"
+
+namespace casteljau {
+
+/// Every model kind of model JSON version 1 that this version implements.
+/// Later layers (B-splines, surfaces) add their types here.
+using Model = std::variant<BezierCurve, PiecewiseBezierCurve>;
+
+/// A closed parameter interval [lower, upper].
+struct Interval {
+  double lower = 0.0;
+  double upper = 1.0;
+  /// lower + f (upper - lower).
+  double lerp(double f) const { return lower + f * (upper - lower); }
+  bool contains(double u) const { return lower <= u && u <= upper; }
+};
+
+/// The model's parameter domain: [0,1] for a Bézier curve, [0,m] for m pieces.
+Interval domain_of(const Model& model);
+
+/// The dimension of the space the model lives in.
+int dimension_of(const Model& model);
+
+/// The model's points at the parameters `us` (any order) into out (size us.size() * d).
+void points_at(const Model& model, std::span<const double> us, std::span<double> out);
+
+/// The k-th derivative at u (k = 0: the point).
+Point derivative_at(const Model& model, double u, int order);
+
+/// The model's type name in model JSON ("bezier", "piecewise_bezier").
+const char* type_name(const Model& model);
+
+}  // namespace casteljau

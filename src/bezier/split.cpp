@@ -1,0 +1,120 @@
+#include "casteljau/bezier/split.hpp"
+
+#include <cassert>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "casteljau/core/tolerance.hpp"
+#include "de_casteljau.hpp"
+
+namespace casteljau {
+namespace {
+
+/// Rows to split: the homogeneous points for a rational curve, else the points.
+PointArray working_points(const BezierCurve& curve) {
+  return curve.is_rational() ? homogeneous_points(curve) : curve.control_points();
+}
+
+BezierCurve curve_from(const BezierCurve& like, std::vector<double> rows, int width) {
+  PointArray points = PointArray::from_trusted(width, std::move(rows));
+  return like.is_rational() ? from_homogeneous(points) : BezierCurve::from_trusted(std::move(points));
+}
+
+/// de Casteljau triangle at t on `rows` (n+1 rows of width): fills left with
+/// P^0_0, P^1_0, ..., P^n_0 and right with P^n_0, P^{n-1}_1, ..., P^0_n.
+void split_rows(std::vector<double> rows, int n, int width, double t, std::vector<double>& left,
+                std::vector<double>& right) {
+  left.assign(static_cast<std::size_t>(n + 1) * width, 0.0);
+  right.assign(static_cast<std::size_t>(n + 1) * width, 0.0);
+  const double s = 1.0 - t;
+  for (int j = 0; j < width; ++j) {
+    left[j] = rows[j];
+    right[n * width + j] = rows[n * width + j];
+  }
+  for (int r = 1; r <= n; ++r) {
+    for (int i = 0; i <= n - r; ++i)
+      for (int j = 0; j < width; ++j)
+        rows[i * width + j] = detail::lerp_step(rows[i * width + j], rows[(i + 1) * width + j], s, t);
+    for (int j = 0; j < width; ++j) {
+      left[r * width + j] = rows[j];
+      right[(n - r) * width + j] = rows[(n - r) * width + j];
+    }
+  }
+}
+
+}  // namespace
+
+std::pair<BezierCurve, BezierCurve> split_at(const BezierCurve& curve, double t) {
+  const PointArray points = working_points(curve);
+  const int width = points.dimension(), n = curve.degree();
+  std::vector<double> left, right;
+  split_rows({points.coordinates().begin(), points.coordinates().end()}, n, width, t, left, right);
+  return {curve_from(curve, std::move(left), width), curve_from(curve, std::move(right), width)};
+}
+
+BezierCurve segment(const BezierCurve& curve, double t0, double t1) {
+  // Blossom values b(t0^(n-i), t1^i) are the control points of C on [t0, t1]
+  // (Ramshaw's blossoming; Farin §3.4): no division, any t0, t1.
+  const PointArray points = working_points(curve);
+  const int width = points.dimension(), n = curve.degree();
+  std::vector<double> result(static_cast<std::size_t>(n + 1) * width);
+  std::vector<double> rows;
+  for (int i = 0; i <= n; ++i) {
+    rows.assign(points.coordinates().begin(), points.coordinates().end());
+    for (int r = 1; r <= n; ++r) {
+      const double t = (r <= n - i) ? t0 : t1;
+      const double s = 1.0 - t;
+      for (int k = 0; k <= n - r; ++k)
+        for (int j = 0; j < width; ++j)
+          rows[k * width + j] = detail::lerp_step(rows[k * width + j], rows[(k + 1) * width + j], s, t);
+    }
+    for (int j = 0; j < width; ++j) result[i * width + j] = rows[j];
+  }
+  return curve_from(curve, std::move(result), width);
+}
+
+BezierCurve reversed(const BezierCurve& curve) {
+  const auto& p = curve.control_points();
+  const int d = curve.dimension();
+  std::vector<double> rows;
+  rows.reserve(p.coordinates().size());
+  for (std::size_t i = p.size(); i-- > 0;) rows.insert(rows.end(), p[i].begin(), p[i].end());
+  std::vector<double> weights(curve.weights().rbegin(), curve.weights().rend());
+  return BezierCurve::from_trusted(PointArray::from_trusted(d, std::move(rows)), std::move(weights));
+}
+
+Expected<PointArray> subdivide_recursive(const BezierCurve& curve, int depth, double t) {
+  if (depth < 0) return Error{"subdivision depth " + std::to_string(depth) + " is negative"};
+  if (depth > tolerances::kMaxSubdivisionDepth) {
+    return Error{"subdivision depth " + std::to_string(depth) + " would give 2^" + std::to_string(depth) +
+                 " + 1 points, the limit is depth " + std::to_string(tolerances::kMaxSubdivisionDepth)};
+  }
+  if (!(t > 0.0 && t < 1.0)) return Error{"subdivision parameter must lie strictly between 0 and 1"};
+  const PointArray points = working_points(curve);
+  const int width = points.dimension(), n = curve.degree(), d = curve.dimension();
+  PointArray out = PointArray::zeros(d, 0);
+  auto emit = [&](const double* row) {
+    std::vector<double> p(row, row + d);
+    if (curve.is_rational())
+      for (double& c : p) c /= row[d];
+    out.push_back(p);
+  };
+  // The seed's recursion: at depth 0 a polygon contributes its first point;
+  // the very last point of the curve is appended at the end.
+  std::function<void(std::vector<double>, int)> recurse = [&](std::vector<double> rows, int r) {
+    if (r == 0) {
+      emit(rows.data());
+      return;
+    }
+    std::vector<double> left, right;
+    split_rows(std::move(rows), n, width, t, left, right);
+    recurse(std::move(left), r - 1);
+    recurse(std::move(right), r - 1);
+  };
+  recurse({points.coordinates().begin(), points.coordinates().end()}, depth);
+  emit(points.coordinates().data() + static_cast<std::size_t>(n) * width);
+  return out;
+}
+
+}  // namespace casteljau
