@@ -56,7 +56,7 @@ asan: deps
 
 # The core library with Debian's em++ (keeps it inside the C++ subset em++ accepts).
 wasm: deps
-	cmake --preset wasm >/dev/null
+	cmake --preset wasm $(CMAKE_FLAGS) >/dev/null
 	cmake --build --preset wasm -j $(JOBS)
 
 test: build asan wasm

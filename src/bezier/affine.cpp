@@ -45,14 +45,14 @@ AffineMap AffineMap::rotate_2d(double radians) {
 AffineMap AffineMap::after(const AffineMap& first) const {
   assert(first.dimension == dimension);
   const int d = dimension;
-  AffineMap result{d, std::vector<double>(d * d, 0.0), apply(*this, first.translation)};
+  AffineMap result{d, std::vector<double>(d * d, 0.0), transformed_point(*this, first.translation)};
   for (int i = 0; i < d; ++i)
     for (int j = 0; j < d; ++j)
       for (int k = 0; k < d; ++k) result.linear[i * d + j] += linear[i * d + k] * first.linear[k * d + j];
   return result;
 }
 
-Point apply(const AffineMap& map, std::span<const double> x) {
+Point transformed_point(const AffineMap& map, std::span<const double> x) {
   const int d = map.dimension;
   assert(static_cast<int>(x.size()) == d);
   Point y(map.translation.begin(), map.translation.end());
@@ -66,7 +66,7 @@ Expected<BezierCurve> transformed(const BezierCurve& curve, const AffineMap& map
     return Error{"the affine map acts on R^" + std::to_string(map.dimension) + ", the curve lives in R^" +
                  std::to_string(curve.dimension())};
   PointArray points = PointArray::zeros(curve.dimension(), 0);
-  for (std::size_t i = 0; i < curve.control_points().size(); ++i) points.push_back(apply(map, curve.control_points()[i]));
+  for (std::size_t i = 0; i < curve.control_points().size(); ++i) points.push_back(transformed_point(map, curve.control_points()[i]));
   std::vector<double> weights(curve.weights().begin(), curve.weights().end());
   return BezierCurve::make(std::move(points), std::move(weights));
 }

@@ -32,7 +32,7 @@ struct AffineMap {
 };
 
 /// A x + b for one point (x.size() == map.dimension).
-Point apply(const AffineMap& map, std::span<const double> x);
+Point transformed_point(const AffineMap& map, std::span<const double> x);
 
 /// The curve with every control point mapped (weights unchanged): the image of
 /// the curve under the map. Error when the dimensions differ.

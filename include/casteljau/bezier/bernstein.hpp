@@ -7,15 +7,16 @@
 
 namespace casteljau {
 
-/// Binomial coefficient C(n, k) as a double, by the product
-/// prod_{i<k} (n-i)/(i+1) (the seed notebook's `binom`). Exact while the
-/// value is below 2^53 (all n <= 56); +inf once it overflows (n >= 1030 near k = n/2).
-/// 0 for k < 0 or k > n.
+/// Binomial coefficient C(n, k) as a double: C(n, i+1) = C(n, i) (n-i)/(i+1)
+/// in 64-bit integers while they fit (so exact whenever C(n,k) < 2^53, e.g.
+/// every n <= 56), then in doubles like the seed notebook's `binom`.
+/// +inf once it overflows (n >= 1030 near k = n/2). 0 for k < 0 or k > n.
 double binomial(int n, int k);
 
-/// One Bernstein polynomial B_{n,k}(t) by its defining formula, with
-/// std::pow; for n so large that C(n,k) overflows it switches to logarithms
-/// (lgamma), so it stays finite. Any finite t (outside [0,1] it extrapolates).
+/// One Bernstein polynomial B_{n,k}(t) = C(n,k) t^k (1-t)^(n-k), as a single
+/// running product of its n factors ordered to stay near 1, so it is finite and
+/// accurate (relative error about 3n ulps) at any degree, where C(n,k) alone
+/// would overflow. O(n). Any finite t (outside [0,1] it extrapolates).
 double bernstein(int n, int k, double t);
 
 /// All n+1 values B_{n,0}(t) .. B_{n,n}(t) into `out` (size n+1), by the

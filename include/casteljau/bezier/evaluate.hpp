@@ -22,8 +22,9 @@ Point point_at(const BezierCurve& curve, double t);
 /// C(t) by the direct sum sum_k C(n,k) t^k (1-t)^(n-k) P_k, exactly as the seed
 /// notebook's `bezier0` computes it (float binomials, powers). Kept to show
 /// where it breaks: the binomials overflow to inf near n = 1030 and the sum
-/// becomes NaN; below that its error is measured against de Casteljau in tests
-/// and in the gallery. O(n^2) like the seed (binomial recomputed per term).
+/// becomes inf or NaN. Below that it is as accurate as de Casteljau in double
+/// (measured at n = 200: 6e-15 of the scale for both; the seed's "vanishing"
+/// degree-200 curve is a property of the curve, not of rounding). O(n^2).
 Point point_at_bernstein_sum(const BezierCurve& curve, double t);
 
 /// Batch evaluation: out[i*d .. i*d+d) = C(ts[i]) for every i, with the same

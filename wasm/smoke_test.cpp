@@ -1,0 +1,44 @@
+// Runs under node (compiled by em++): the Bézier core gives the seed's known
+// values in WebAssembly too. Prints one line per check; exit status 1 on any failure.
+#include <cmath>
+#include <cstdio>
+
+#include "casteljau/bezier/construction.hpp"
+#include "casteljau/bezier/degree.hpp"
+#include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/bezier/split.hpp"
+#include "casteljau/ops/flatten.hpp"
+
+namespace {
+
+int failures = 0;
+
+void check(bool ok, const char* what) {
+  std::printf("%s %s\n", ok ? "ok  " : "FAIL", what);
+  if (!ok) ++failures;
+}
+
+}  // namespace
+
+int main() {
+  using namespace casteljau;
+  const auto curve = BezierCurve::make(PointArray::make({{0, 0}, {1, 2}, {2, 2}, {4, 1}, {4, 0}}).value()).value();
+  check(point_at(curve, 0.5) == Point{2.25, 1.5}, "notebook polygon: B(0.5) = (2.25, 1.5)");
+  const auto points = subdivide_recursive(curve, 10);
+  check(points && points->size() == 1025, "recursive subdivision r = 10 gives 1025 points");
+  std::vector<double> ts{0.0, 0.25, 0.5, 0.75, 1.0}, out(10);
+  points_at(curve, ts, out);
+  check(out[4] == 2.25 && out[5] == 1.5, "batch evaluation agrees with point_at");
+  const auto [left, right] = split_at(curve, 0.3);
+  check(point_at(left, 1.0) == point_at(curve, 0.3), "split point is point_at bit for bit");
+  check(elevate_degree(curve, 2).degree() == 6, "degree elevation");
+  check(casteljau_construction(curve, 0.5).size() == 5, "de Casteljau construction levels");
+  const auto arc = BezierCurve::make(PointArray::make({{1, 0}, {1, 1}, {0, 1}}).value(), {1, std::sqrt(0.5), 1}).value();
+  const Point p = point_at(arc, 0.3);
+  check(std::abs(std::hypot(p[0], p[1]) - 1.0) < 1e-15, "rational quarter circle has radius 1");
+  const auto line = flatten(curve, Tolerance{0.01});
+  check(line && line->points.size() > 2, "flattening within 0.01");
+  check(!BezierCurve::make(PointArray::make({{0, 0}, {1, 1}}).value(), {1, -1}).has_value(), "negative weight refused");
+  std::printf("%d failed\n", failures);
+  return failures == 0 ? 0 : 1;
+}
