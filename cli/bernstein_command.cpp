@@ -1,0 +1,50 @@
+// casteljau bernstein: the plot of the Bernstein basis of degree N
+// (docs/cli.md, "bernstein"; the seed notebook's plot_bernstein).
+#include <fmt/format.h>
+
+#include <memory>
+#include <string>
+
+#include "casteljau/render/layout.hpp"
+#include "casteljau/render/plots.hpp"
+#include "casteljau/render/write.hpp"
+#include "commands.hpp"
+
+namespace casteljau::cli {
+namespace {
+
+struct BernsteinOptions {
+  std::string degree;
+  std::string output;
+  bool without_ends = false;
+};
+
+int run_bernstein(const BernsteinOptions& options) {
+  const std::string& text = options.degree;
+  if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+    return fail(fmt::format("N: '{}' is not a whole number >= 1", text.substr(0, 60)));
+  const int n = std::stoi(text);
+  auto figure = render::bernstein_basis_figure(n, options.without_ends);
+  if (!figure) return fail(figure.error());
+  if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
+  return 0;
+}
+
+}  // namespace
+
+void add_bernstein_command(CLI::App& app, int& status) {
+  auto options = std::make_shared<BernsteinOptions>();
+  CLI::App* bernstein = app.add_subcommand(
+      "bernstein",
+      fmt::format("Plots the Bernstein basis B_(N,k)(t) = C(N,k) t^k (1-t)^(N-k), k = 0..N, on [0,1] into an SVG, PNG "
+                  "or PDF figure (by the extension of -o). 1 <= N <= {}.",
+                  render::kMaxPlottedBasisDegree));
+  bernstein->add_option("N", options->degree, "The degree")->required();
+  bernstein->add_option("-o,--output", options->output, "The figure to write: FILE.svg, FILE.png or FILE.pdf")
+      ->type_name("FILE")
+      ->required();
+  bernstein->add_flag("--without-ends", options->without_ends, "Leave out B_(N,0) and B_(N,N) (N >= 2)");
+  bernstein->callback([options, &status] { status = run_bernstein(*options); });
+}
+
+}  // namespace casteljau::cli

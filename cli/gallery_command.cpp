@@ -1,0 +1,45 @@
+// casteljau gallery: every seed figure as SVG and PNG plus index.html
+// (docs/cli.md, "gallery"; docs/gallery.md lists the figures).
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "casteljau/render/gallery.hpp"
+#include "commands.hpp"
+
+namespace casteljau::cli {
+namespace {
+
+struct GalleryOptions {
+  std::string directory = "out/gallery";
+  std::string examples;
+};
+
+int run_gallery(const GalleryOptions& options) {
+  const std::filesystem::path examples =
+      options.examples.empty() ? render::default_examples_dir() : std::filesystem::path(options.examples);
+  auto figures = render::write_gallery(options.directory, examples);
+  if (!figures) return fail(figures.error());
+  fmt::print("wrote {} figures (SVG and PNG) and index.html to {}\n", figures->size(), options.directory);
+  return 0;
+}
+
+}  // namespace
+
+void add_gallery_command(CLI::App& app, int& status) {
+  auto options = std::make_shared<GalleryOptions>();
+  CLI::App* gallery = app.add_subcommand(
+      "gallery",
+      "Renders every seed figure (Bernstein bases, the notebook's curves, de Casteljau constructions, subdivision, "
+      "the degree-200 evaluators, the semicircle, flattening, degree elevation, the vector form) into DIR as SVG and "
+      "PNG, with an index.html showing each one with a line of explanation.");
+  gallery->add_option("DIR", options->directory, "Output folder, created if needed (default: out/gallery)");
+  gallery->add_option("--examples", options->examples,
+                      "Folder with the seeds' CSV files (default: the examples/ folder casteljau was built from)")
+      ->type_name("DIR");
+  gallery->callback([options, &status] { status = run_gallery(*options); });
+}
+
+}  // namespace casteljau::cli

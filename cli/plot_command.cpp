@@ -1,0 +1,122 @@
+// casteljau plot: figures of curves and point sets (docs/cli.md, "plot").
+// Translates files and options into render::plot_figure and writes the
+// figure atomically; on bad input nothing is written.
+#include <fmt/format.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "casteljau/io/csv.hpp"
+#include "casteljau/io/model_json.hpp"
+#include "casteljau/render/plots.hpp"
+#include "casteljau/render/write.hpp"
+#include "commands.hpp"
+
+namespace casteljau::cli {
+namespace {
+
+struct PlotCommandOptions {
+  std::vector<std::string> inputs;
+  std::string output;
+  std::string construction;
+  bool control_polygon = false;
+  bool points = false;
+  bool comb = false;
+  bool basis = false;
+  bool tangents = false;
+  bool points_only = false;
+};
+
+std::string lowercase_extension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+/// A file as a plot source: .json is model JSON; .csv a point set, the
+/// control polygon of one Bézier curve (as for eval) unless --points-only.
+Expected<render::PlotSource> read_source(const std::string& path, bool points_only) {
+  const std::string extension = lowercase_extension(path);
+  render::PlotSource source;
+  source.name = std::filesystem::path(path).filename().string();
+  if (extension == ".json") {
+    if (points_only) return Error{fmt::format("--points-only applies to CSV point sets, '{}' is model JSON", path)};
+    auto models = read_models_json(path);
+    if (!models) return models.error();
+    source.models = std::move(*models);
+    return source;
+  }
+  if (extension == ".csv") {
+    auto points = read_points_csv(path);
+    if (!points) return points.error();
+    if (points_only) {
+      source.points = std::move(*points);
+      return source;
+    }
+    auto curve = BezierCurve::make(std::move(*points));
+    if (!curve) return with_context(curve.error(), "'" + path + "'");
+    source.models.push_back(std::move(*curve));
+    return source;
+  }
+  return Error{fmt::format("cannot plot '{}': unknown input format '{}' (use model JSON .json or a CSV point set .csv)",
+                           path, extension.empty() ? "no extension" : extension)};
+}
+
+int run_plot(const PlotCommandOptions& options) {
+  render::PlotOptions plot;
+  plot.bezier.control_polygon = options.control_polygon;
+  plot.bezier.control_points = options.points;
+  plot.bezier.curvature_comb = options.comb;
+  plot.bezier.end_tangents = options.tangents;
+  plot.basis = options.basis;
+  if (!options.construction.empty()) {
+    auto t = parse_number(options.construction);
+    if (!t) return fail("--construction: " + t.error().message);
+    plot.bezier.construction = *t;
+  }
+  // Refuse a bad output name before reading anything (write_figure checks it
+  // again; this keeps the message about the output first).
+  const std::string extension = lowercase_extension(options.output);
+  if (extension != ".svg" && extension != ".png" && extension != ".pdf")
+    return fail(fmt::format("cannot write '{}': unknown figure format '{}' (use .svg, .png or .pdf)", options.output,
+                            extension.empty() ? "no extension" : extension));
+  std::vector<render::PlotSource> sources;
+  for (const auto& path : options.inputs) {
+    auto source = read_source(path, options.points_only);
+    if (!source) return fail(source.error());
+    sources.push_back(std::move(*source));
+  }
+  auto figure = render::plot_figure(sources, plot);
+  if (!figure) return fail(figure.error());
+  if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
+  return 0;
+}
+
+}  // namespace
+
+void add_plot_command(CLI::App& app, int& status) {
+  auto options = std::make_shared<PlotCommandOptions>();
+  CLI::App* plot = app.add_subcommand(
+      "plot",
+      "Draws curves and point sets into an SVG, PNG or PDF figure (chosen by the extension of -o). Every curve is "
+      "drawn as a polyline within a quarter pixel of it (casteljau's own flattening). A CSV point set is the control "
+      "polygon of one Bézier curve (as for eval) unless --points-only; 3D curves are projected on the x, y plane.");
+  plot->add_option("INPUT", options->inputs, "Model JSON (.json) or CSV point set (.csv); several are drawn together")
+      ->required();
+  plot->add_option("-o,--output", options->output, "The figure to write: FILE.svg, FILE.png or FILE.pdf")
+      ->type_name("FILE")
+      ->required();
+  plot->add_flag("--control-polygon", options->control_polygon, "Draw each control polygon (dashed gray)");
+  plot->add_flag("--points", options->points, "Draw the control points (red dots)");
+  plot->add_option("--construction", options->construction,
+                   "Draw the de Casteljau construction at parameter T (global parameter of a piecewise curve)")
+      ->type_name("T");
+  plot->add_flag("--comb", options->comb, "Draw the curvature comb (teeth along the normal, length ~ curvature)");
+  plot->add_flag("--basis", options->basis, "Add a panel with the Bernstein basis of the first curve's degree");
+  plot->add_flag("--tangents", options->tangents, "Draw the end tangents along the first and last legs (blue)");
+  plot->add_flag("--points-only", options->points_only, "Draw CSV point sets as points only, not as a curve");
+  plot->callback([options, &status] { status = run_plot(*options); });
+}
+
+}  // namespace casteljau::cli

@@ -1,0 +1,65 @@
+#pragma once
+// The gallery: every seed figure (issue "Foundation", seed notebook 004 and
+// seed 003), rendered as SVG and PNG with an index.html that shows each one
+// with one line of explanation. `casteljau gallery` and `make demo` call this.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "casteljau/core/expected.hpp"
+#include "casteljau/core/point_array.hpp"
+#include "casteljau/render/figure.hpp"
+
+namespace casteljau::render {
+
+/// One figure of the gallery: file stem, one line for index.html, the figure.
+struct GalleryFigure {
+  std::string name;         ///< file stem, e.g. "01_bernstein_20"
+  std::string explanation;  ///< one sentence (plain text; measured numbers included)
+  Figure figure;
+};
+
+/// The folder with the seeds' CSV files (head, car, semicircle, spirals...)
+/// fixed when casteljau was built.
+std::filesystem::path default_examples_dir();
+
+/// The seed notebook's cycle(n): P_k = (cos t_k, sin t_k) / (k+1) with
+/// t_k = -pi/2 + 2 k pi / n, k = 0..n (a spiral of n+1 points).
+PointArray notebook_cycle(int n);
+
+/// Degree 200 on cycle(200): |point_at_bernstein_sum - point_at| at `samples`
+/// evenly spaced t in [0,1] (samples >= 2).
+struct EvaluatorComparison {
+  std::vector<double> parameters;
+  std::vector<double> differences;
+  double maximum = 0.0;
+  double at = 0.0;  ///< a parameter where the maximum is reached
+};
+EvaluatorComparison compare_evaluators_on_cycle(int degree, int samples);
+
+/// The seed 003 semicircle cubic (A, B, C, D): |C(t)| - radius at `samples`
+/// evenly spaced t, and the largest absolute value.
+struct RadialError {
+  std::vector<double> parameters;
+  std::vector<double> errors;
+  double maximum = 0.0;  ///< max |error|
+  double at = 0.0;
+};
+RadialError radial_error(const PointArray& control_points, double radius, int samples);
+
+/// Every gallery figure, built from the CSV files in `examples_dir`.
+/// Errors: a missing or malformed seed file (named).
+Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path& examples_dir);
+
+/// The index page: title, then for each figure its SVG image, title and
+/// explanation, with links to the .svg and .png files.
+std::string gallery_index_html(const std::vector<GalleryFigure>& figures);
+
+/// Builds the gallery and writes NAME.svg, NAME.png for every figure and
+/// index.html into `dir` (created with its parents if needed). Each file is
+/// written atomically; index.html last, so a complete index means a complete gallery.
+Expected<std::vector<GalleryFigure>> write_gallery(const std::filesystem::path& dir,
+                                                   const std::filesystem::path& examples_dir);
+
+}  // namespace casteljau::render

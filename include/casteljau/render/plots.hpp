@@ -1,0 +1,82 @@
+#pragma once
+// Figures of Bézier curves and of the Bernstein basis: the pictures of the
+// seed notebook (seed 004: plot_bernstein, plot_bezier2, demo_casteljau) as
+// functions that fill Panels. The CLI's `plot` and `bernstein` and the
+// gallery are built from these; no geometry lives in the front ends.
+
+#include <optional>
+#include <string>
+
+#include "casteljau/bezier/bezier_curve.hpp"
+#include "casteljau/core/expected.hpp"
+#include "casteljau/io/model.hpp"
+#include "casteljau/render/figure.hpp"
+
+namespace casteljau::render {
+
+/// What to draw with a Bézier curve besides the curve itself.
+struct BezierPlotOptions {
+  bool control_polygon = false;  ///< the polygon P_0..P_n, dashed gray
+  bool control_points = false;   ///< P_0..P_n as red dots (the notebook's 'or')
+  bool end_tangents = false;     ///< the segments P_0P_1 and P_{n-1}P_n in blue (plot_bezier2)
+  /// The de Casteljau construction at this t: every intermediate polygon
+  /// dashed black with black dots, the point C(t) in red (demo_casteljau).
+  std::optional<double> construction;
+  bool curvature_comb = false;  ///< teeth along the normal, length proportional to the curvature
+};
+
+/// Adds one curve (already in the plane, see plane_curve()) with its options
+/// to a panel. Labels go to the legend when `label` is not empty.
+void add_bezier(Panel& panel, const BezierCurve& plane, const BezierPlotOptions& options,
+                Color color = colors::black, const std::string& label = "");
+
+/// The curvature comb of a plane curve: `teeth` segments from C(t_i) to
+/// C(t_i) - s kappa(t_i) N(t_i) at evenly spaced t_i (N the left normal,
+/// kappa signed, so teeth stand on the outside of each bend), s chosen so the
+/// longest tooth is `length` model units, and the polyline through their
+/// tips. Cusps (infinite curvature) are skipped.
+void add_curvature_comb(Panel& panel, const BezierCurve& plane, double length, int teeth = 96,
+                        Color color = colors::gray);
+
+/// The graph t -> B_{n,k}(t) on [0,1] as a Bézier curve: control points
+/// (j/n, delta_jk), exact by linear precision, so the basis is drawn by the
+/// same certified flattening as every other curve. n >= 1, 0 <= k <= n.
+BezierCurve bernstein_graph(int n, int k);
+
+/// A panel with B_{n,k} for k = 0..n (or k = 1..n-1 with `without_ends`),
+/// black like the notebook's plot_bernstein. Errors: n < 1, n beyond
+/// kMaxPlottedBasisDegree, `without_ends` with n < 2 (nothing left to draw).
+Expected<Panel> bernstein_basis_panel(int n, bool without_ends = false);
+
+/// A whole figure of the basis (title "Bernstein basis, n = ...").
+Expected<Figure> bernstein_basis_figure(int n, bool without_ends = false);
+
+/// One input of the `plot` command: curves (model JSON, or a CSV point set
+/// read as one Bézier curve's control polygon), or a point set drawn as dots.
+struct PlotSource {
+  std::string name;           ///< the file, for the legend and error messages
+  std::vector<Model> models;  ///< curves; when empty, `points` is drawn as red dots
+  PointArray points;
+};
+
+/// What `plot` draws: the options for every curve, and a second panel with the
+/// Bernstein basis of the first curve's degree.
+struct PlotOptions {
+  BezierPlotOptions bezier;
+  bool basis = false;
+};
+
+/// The figure of `plot`: every curve (black when there is one, the tab10
+/// cycle otherwise, named in the legend when there are several), in the plane
+/// (plane_curve: 3D curves projected on x, y; 1D curves as graphs). A
+/// piecewise curve gets the options piece by piece; its construction is drawn
+/// on the piece holding the global parameter T in [0, m], its end tangents at
+/// its two ends. Errors: no source; a construction parameter outside a
+/// curve's domain (named); a rational curve of dimension 1.
+Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotOptions& options);
+
+/// The smallest box around a curve's control points, widened by 1 % of its
+/// size: the curve lies in it (convex hull property).
+std::array<double, 4> control_box(const BezierCurve& plane);
+
+}  // namespace casteljau::render

@@ -1,0 +1,226 @@
+#include "casteljau/render/plots.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include "casteljau/bezier/construction.hpp"
+#include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/render/layout.hpp"
+
+namespace casteljau::render {
+namespace {
+
+/// True when some item of the panel already has this legend text: decorations
+/// of several curves (control points, tangents) are listed once.
+bool has_label(const Panel& panel, const std::string& text) {
+  auto same = [&](const auto& items) {
+    return std::any_of(items.begin(), items.end(), [&](const auto& item) { return item.label == text; });
+  };
+  return same(panel.regions) || same(panel.segments) || same(panel.polylines) || same(panel.curves) ||
+         same(panel.markers);
+}
+
+std::string once(const Panel& panel, const std::string& text) { return has_label(panel, text) ? std::string() : text; }
+
+Vec2 plane_point(std::span<const double> p) { return Vec2{{p[0], p[1]}}; }
+
+Panel geometry_panel_for_plot() {
+  Panel panel;
+  panel.equal_aspect = true;
+  return panel;
+}
+
+}  // namespace
+
+std::array<double, 4> control_box(const BezierCurve& plane) {
+  const auto& p = plane.control_points();
+  double x0 = p[0][0], x1 = x0, y0 = p[0][1], y1 = y0;
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    x0 = std::min(x0, p[i][0]), x1 = std::max(x1, p[i][0]);
+    y0 = std::min(y0, p[i][1]), y1 = std::max(y1, p[i][1]);
+  }
+  const double pad = 0.01 * std::max(x1 - x0, y1 - y0);
+  return {x0 - pad, y0 - pad, x1 + pad, y1 + pad};
+}
+
+void add_curvature_comb(Panel& panel, const BezierCurve& plane, double length, int teeth, Color color) {
+  teeth = std::max(teeth, 2);
+  struct Sample {
+    Vec2 point, normal;
+    double kappa;
+  };
+  std::vector<Sample> samples;
+  double largest = 0.0;
+  for (int i = 0; i < teeth; ++i) {
+    const double t = static_cast<double>(i) / (teeth - 1);
+    const double kappa = signed_curvature_at(plane, t);
+    if (!std::isfinite(kappa)) continue;  // a cusp: no finite tooth
+    const Point tangent = unit_tangent_at(plane, t);
+    samples.push_back({plane_point(point_at(plane, t)), Vec2{{-tangent[1], tangent[0]}}, kappa});
+    largest = std::max(largest, std::abs(kappa));
+  }
+  if (samples.empty()) return;
+  const double scale = largest > 0.0 ? length / largest : 0.0;
+  SegmentItem teeth_item{{}, solid(color, 0.8), false, once(panel, "curvature comb")};
+  PolylineItem tips{{}, solid(color, 1.0), ""};
+  for (const auto& s : samples) {
+    // Signed curvature > 0 turns left (centre on the left normal): the tooth
+    // points the other way, outside the bend.
+    const Vec2 tip = s.point - (scale * s.kappa) * s.normal;
+    teeth_item.segments.push_back({s.point, tip});
+    tips.points.push_back(tip);
+  }
+  panel.segments.push_back(std::move(teeth_item));
+  panel.polylines.push_back(std::move(tips));
+}
+
+void add_bezier(Panel& panel, const BezierCurve& plane, const BezierPlotOptions& options, Color color,
+                const std::string& label) {
+  const auto points = plane_points(plane.control_points());
+  const auto box = control_box(plane);
+  const double size = std::hypot(box[2] - box[0], box[3] - box[1]);
+  if (options.curvature_comb) add_curvature_comb(panel, plane, 0.15 * size);
+  if (options.control_polygon) panel.polylines.push_back({points, dashed(colors::gray, 1.0), once(panel, "control polygon")});
+  if (options.end_tangents && points.size() >= 2) {
+    const std::size_t n = points.size() - 1;
+    panel.segments.push_back({{{points[0], points[1]}, {points[n], points[n - 1]}},
+                              solid(colors::blue),
+                              false,
+                              once(panel, "end tangents")});
+  }
+  bool control_points = options.control_points;
+  if (options.construction) {
+    const double t = *options.construction;
+    const auto levels = casteljau_construction(plane, t);
+    const std::string polygons = once(panel, "intermediate polygons");
+    for (std::size_t r = 0; r + 1 < levels.size(); ++r)
+      panel.polylines.push_back({plane_points(levels[r]), dashed(colors::black, 1.0), r == 0 ? polygons : ""});
+    std::vector<Vec2> intermediate;
+    for (std::size_t r = 1; r + 1 < levels.size(); ++r)
+      for (auto p : plane_points(levels[r])) intermediate.push_back(p);
+    if (!intermediate.empty()) panel.markers.push_back({intermediate, colors::black, 4.0 * kPixelsPerPoint, ""});
+    const Vec2 c = plane_points(levels.back())[0];
+    panel.markers.push_back({{c}, colors::red, 8.0 * kPixelsPerPoint,
+                             fmt::format("C({:g}) = ({:.4g}, {:.4g})", t, c[0], c[1])});
+    control_points = true;
+  }
+  panel.curves.push_back({{plane}, solid(color), label});
+  if (control_points) panel.markers.push_back({points, colors::red, 6.0 * kPixelsPerPoint, once(panel, "control points")});
+}
+
+BezierCurve bernstein_graph(int n, int k) {
+  std::vector<double> coordinates;
+  coordinates.reserve(2 * static_cast<std::size_t>(n + 1));
+  for (int j = 0; j <= n; ++j) {
+    coordinates.push_back(static_cast<double>(j) / n);
+    coordinates.push_back(j == k ? 1.0 : 0.0);
+  }
+  return BezierCurve::from_trusted(PointArray::from_trusted(2, std::move(coordinates)));
+}
+
+Expected<Panel> bernstein_basis_panel(int n, bool without_ends) {
+  if (n < 1) return Error{fmt::format("the degree of the Bernstein basis must be >= 1, got {}", n)};
+  if (n > kMaxPlottedBasisDegree)
+    return Error{fmt::format("the degree of the Bernstein basis must be <= {} to be plotted, got {}",
+                             kMaxPlottedBasisDegree, n)};
+  if (without_ends && n < 2)
+    return Error{fmt::format("without k = 0 and k = n nothing is left of the basis of degree {}", n)};
+  Panel panel;
+  panel.x.label = "t";
+  panel.y.label = fmt::format("B_{{{},k}}(t)", n);
+  const int first = without_ends ? 1 : 0, last = without_ends ? n - 1 : n;
+  for (int k = first; k <= last; ++k) panel.curves.push_back({{bernstein_graph(n, k)}, solid(colors::black), ""});
+  return panel;
+}
+
+Expected<Figure> bernstein_basis_figure(int n, bool without_ends) {
+  auto panel = bernstein_basis_panel(n, without_ends);
+  if (!panel) return panel.error();
+  Figure figure;
+  figure.width = 800;
+  figure.height = 700;
+  figure.title = without_ends ? fmt::format("Bernstein basis B_{{{0},k}}, k = 1..{1} (without k = 0 and k = {0})", n, n - 1)
+                              : fmt::format("Bernstein basis B_{{{0},k}}, k = 0..{0}", n);
+  figure.panels.push_back(std::move(*panel));
+  return figure;
+}
+
+Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotOptions& options) {
+  if (sources.empty()) return Error{"nothing to plot: give at least one input"};
+  std::size_t curve_count = 0;
+  for (const auto& source : sources) curve_count += source.models.size();
+  Panel panel = geometry_panel_for_plot();
+  std::optional<int> first_degree;
+  std::string title;
+  int color_index = 0;
+  for (const auto& source : sources) {
+    title += (title.empty() ? "" : ", ") + source.name;
+    if (source.models.empty()) {
+      panel.markers.push_back({plane_points(source.points), curve_count == 0 && sources.size() == 1 ? colors::red
+                                                                                                  : cycle_color(color_index),
+                               6.0 * kPixelsPerPoint, sources.size() > 1 ? source.name : ""});
+      ++color_index;
+      continue;
+    }
+    for (std::size_t m = 0; m < source.models.size(); ++m) {
+      const std::string name = source.models.size() == 1 ? source.name : fmt::format("{}[{}]", source.name, m);
+      std::vector<BezierCurve> pieces;
+      if (const auto* curve = std::get_if<BezierCurve>(&source.models[m])) pieces.push_back(*curve);
+      else pieces = std::get<PiecewiseBezierCurve>(source.models[m]).pieces();
+      const Interval domain = domain_of(source.models[m]);
+      std::optional<std::pair<int, double>> construction;
+      if (options.bezier.construction) {
+        const double u = *options.bezier.construction;
+        if (!domain.contains(u))
+          return Error{fmt::format("--construction {} is outside the domain [{}, {}] of {}", u, domain.lower,
+                                   domain.upper, name)};
+        construction = std::pair<int, double>{0, u};
+        if (const auto* piecewise = std::get_if<PiecewiseBezierCurve>(&source.models[m]))
+          construction = locate(*piecewise, u);
+      }
+      const Color color = curve_count == 1 ? colors::black : cycle_color(color_index++);
+      const std::string label = curve_count == 1 ? "" : name;
+      for (std::size_t i = 0; i < pieces.size(); ++i) {
+        auto plane = plane_curve(pieces[i]);
+        if (!plane) return with_context(plane.error(), name);
+        if (!first_degree) first_degree = plane->degree();
+        BezierPlotOptions piece_options = options.bezier;
+        piece_options.construction.reset();
+        if (construction && construction->first == static_cast<int>(i)) piece_options.construction = construction->second;
+        if (pieces.size() > 1 && options.bezier.end_tangents) piece_options.end_tangents = false;
+        add_bezier(panel, *plane, piece_options, color, i == 0 ? label : "");
+        if (pieces.size() > 1 && options.bezier.end_tangents && (i == 0 || i + 1 == pieces.size())) {
+          // The whole curve's end tangents: along the first and last legs.
+          const auto points = plane_points(plane->control_points());
+          const std::size_t n = points.size() - 1;
+          if (n >= 1) {
+            SegmentItem tangent{{}, solid(colors::blue), false, once(panel, "end tangents")};
+            if (i == 0) tangent.segments.push_back({points[0], points[1]});
+            if (i + 1 == pieces.size()) tangent.segments.push_back({points[n], points[n - 1]});
+            panel.segments.push_back(std::move(tangent));
+          }
+        }
+      }
+    }
+  }
+  Figure figure;
+  figure.title = title;
+  figure.width = 900;
+  figure.height = 700;
+  if (options.basis && first_degree) {
+    auto basis = bernstein_basis_panel(std::max(*first_degree, 1));
+    if (!basis) return basis.error();
+    basis->title = fmt::format("Bernstein basis of degree {}", std::max(*first_degree, 1));
+    figure.height = 1200;
+    figure.panels.push_back(std::move(panel));
+    figure.panels.push_back(std::move(*basis));
+  } else {
+    figure.panels.push_back(std::move(panel));
+  }
+  return figure;
+}
+
+}  // namespace casteljau::render
