@@ -15,7 +15,7 @@ PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark
   python3-matplotlib python3-pytest python3-hypothesis
 # Peers measured beside casteljau by `make bench`.
 BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
-  libtbb-dev libsisl-dev lib2geom-dev libgsl-dev libboost-dev
+  libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev
 
 CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON)
 ifeq ($(CI),true)

@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# Runs every benchmark binary built in build-bench/bench/ (W1..W6, whichever
+# exist), each pinned to one core, 3 repetitions in random interleaving, and
+# writes Google Benchmark's JSON to out/bench/<name>.json (console output to
+# out/bench/<name>.txt). Then prints one line per row: median throughput,
+# min-max over the repetitions, and the accuracy counters the row reports.
+# Exits non-zero if a binary fails or a row reported an error (a benchmark
+# whose output check failed calls SkipWithError).
+#
+# Environment: CASTELJAU_BENCH_DIR (default build-bench/bench),
+# CASTELJAU_BENCH_CPU (default 0), CASTELJAU_BENCH_OUT (default out/bench),
+# CASTELJAU_BENCH_FILTER (a --benchmark_filter regex, default all).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bench_dir="${CASTELJAU_BENCH_DIR:-build-bench/bench}"
+cpu="${CASTELJAU_BENCH_CPU:-0}"
+out_dir="${CASTELJAU_BENCH_OUT:-out/bench}"
+filter="${CASTELJAU_BENCH_FILTER:-.}"
+mkdir -p "$out_dir"
+
+pin=()
+if command -v taskset >/dev/null 2>&1; then pin=(taskset -c "$cpu"); fi
+
+binaries=()
+for candidate in "$bench_dir"/w*; do
+  [[ -f "$candidate" && -x "$candidate" ]] && binaries+=("$candidate")
+done
+if [[ ${#binaries[@]} -eq 0 ]]; then
+  echo "run.sh: no benchmark binaries in $bench_dir (build the bench preset first)" >&2
+  exit 1
+fi
+
+echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
+status=0
+for binary in "${binaries[@]}"; do
+  name="$(basename "$binary")"
+  json="$out_dir/$name.json"
+  echo "== $name -> $json"
+  if ! "${pin[@]}" "$binary" \
+      --benchmark_filter="$filter" \
+      --benchmark_repetitions=3 \
+      --benchmark_enable_random_interleaving=true \
+      --benchmark_report_aggregates_only=false \
+      --benchmark_out="$json" --benchmark_out_format=json \
+      >"$out_dir/$name.txt" 2>&1; then
+    echo "   $name failed (see $out_dir/$name.txt)"
+    status=1
+    continue
+  fi
+  /usr/bin/python3 - "$json" <<'EOF' || status=1
+import json, sys
+from collections import OrderedDict
+
+data = json.load(open(sys.argv[1]))
+rows = OrderedDict()
+failed = False
+for b in data["benchmarks"]:
+    name = b.get("run_name", b["name"]).removesuffix("/real_time")
+    row = rows.setdefault(name, {"reps": [], "median": None, "error": None,
+                                 "order": (b.get("family_index", 0), b.get("per_family_instance_index", 0))})
+    if b.get("error_occurred"):
+        row["error"] = b.get("error_message", "error")
+        failed = True
+    elif b.get("run_type") == "aggregate":
+        if b.get("aggregate_name") == "median":
+            row["median"] = b
+    else:
+        row["reps"].append(b)
+
+def rate(b):
+    if "items_per_second" in b:
+        return "%9.1f M/s" % (b["items_per_second"] / 1e6)
+    return "%9.3f %s" % (b["real_time"], b.get("time_unit", "ns"))
+
+skip = {"name", "run_name", "run_type", "repetitions", "repetition_index", "threads", "iterations",
+        "real_time", "cpu_time", "time_unit", "items_per_second", "bytes_per_second", "family_index",
+        "per_family_instance_index", "aggregate_name", "aggregate_unit", "error_occurred", "error_message"}
+width = max((len(n) for n in rows), default=10)
+for name, row in sorted(rows.items(), key=lambda item: item[1]["order"]):
+    if row["error"]:
+        print("   %-*s  FAILED: %s" % (width, name, row["error"]))
+        continue
+    med = row["median"] or (row["reps"][0] if row["reps"] else None)
+    if med is None:
+        continue
+    spread = ""
+    values = [r["items_per_second"] / 1e6 for r in row["reps"] if "items_per_second" in r]
+    if len(values) > 1:
+        spread = " [%.1f-%.1f]" % (min(values), max(values))
+    counters = " ".join("%s=%.3g" % (k, v) for k, v in med.items()
+                        if k not in skip and isinstance(v, (int, float)))
+    print("   %-*s %s%s %s" % (width, name, rate(med), spread, counters))
+sys.exit(1 if failed else 0)
+EOF
+done
+exit $status
