@@ -40,5 +40,20 @@ inline constexpr int kMaxStackDegree = 255;
 /// operations behind one control point of a subdivided curve.
 inline constexpr double kRoundingSlack = 8.0 * 2.220446049250313e-16;
 
+/// Rounding allowance of flattening, relative to the curve's scale (largest
+/// absolute control-point coordinate), times max(1, n/4) and the weight ratio
+/// max w / min w of a rational curve. flatten() certifies each segment against
+/// tolerance minus this amount: it absorbs the rounding of the vertices
+/// (de Casteljau, about n ulps of the scale each) and of the deviation bound
+/// itself (a few dozen operations on O(scale) numbers), both far below
+/// 1e-13 x scale. Unit: fraction of the scale.
+inline constexpr double kFlattenRoundingAllowance = 1e-13;
+
+/// Smallest flattening tolerance accepted, as a multiple of that allowance:
+/// below 10 x allowance (about 1e-12 x scale) double precision cannot
+/// certify the distance, and flatten() refuses the request instead of
+/// subdividing down to rounding noise.
+inline constexpr double kFlattenSmallestToleranceFactor = 10.0;
+
 }  // namespace tolerances
 }  // namespace casteljau

@@ -1,7 +1,8 @@
 #pragma once
 // Flattening: a polyline whose vertices lie on the curve and that stays within
 // a distance tolerance of it, guaranteed (not estimated). Used to draw every
-// curve casteljau renders, and for CNC output (G1 moves).
+// curve casteljau renders, and for CNC output (G1 moves). Method and proof:
+// docs/flattening.md.
 
 #include <vector>
 
@@ -17,22 +18,49 @@ struct Polyline {
   std::vector<double> parameters;  ///< t of each vertex, increasing from 0 to 1
 };
 
-/// A polyline through points of the curve such that every point of the curve
-/// between two consecutive vertices lies within tolerance.distance of the
-/// segment joining them (Hausdorff distance from curve to polyline <= tolerance).
-/// Each piece's deviation is certified by a bound that cannot underestimate
-/// (the control-polygon / convex hull bound, or the exact maximum of the
-/// signed distance for degree <= 3; see docs/flattening.md), and the pieces
-/// are chosen to keep the segment count close to the optimum.
-/// Errors: tolerance not finite and > 0; more than tolerances::kMaxFlattenSegments segments.
+/// A polyline through points of the curve, vertex i = point_at(curve, t_i)
+/// bit for bit, 0 = t_0 < t_1 < ... < t_m = 1, such that every point of the
+/// curve between two consecutive vertices lies within tolerance.distance of
+/// the segment joining them, and every point of that segment within
+/// tolerance.distance of the curve (Hausdorff distance <= tolerance).
+/// Each segment is certified by chord_deviation_bound (which cannot
+/// underestimate) against the tolerance minus a rounding allowance
+/// (tolerances::kFlattenRoundingAllowance); the segments are chosen greedily,
+/// each reaching as far as the bound allows (to within a few percent), which
+/// keeps the count close to the optimum. Any degree, dimension, rational
+/// curves, cusps, loops, zero-length curves. Cost: O(m) bound evaluations,
+/// about 2.5 per segment; O(1) each for plane polynomial curves of degree
+/// <= 3, O(n^2 d) otherwise.
+/// Errors: tolerance not finite or <= 0; tolerance below what double precision
+/// can certify for this curve (kFlattenSmallestToleranceFactor x allowance);
+/// more than tolerances::kMaxFlattenSegments segments.
 Expected<Polyline> flatten(const BezierCurve& curve, Tolerance tolerance);
 
-/// The number of segments flatten() produces for this curve and tolerance.
+/// flatten() with a caller's cap on the segment count (<= the library's
+/// tolerances::kMaxFlattenSegments in practice): an error, not a truncated
+/// polyline, when more would be needed. For budgets (a plotter's buffer) and tests.
+Expected<Polyline> flatten(const BezierCurve& curve, Tolerance tolerance, long max_segments);
+
+/// The number of segments flatten() produces for this curve and tolerance
+/// (same errors), without building the polyline.
 Expected<long> flatten_segment_count(const BezierCurve& curve, Tolerance tolerance);
 
 /// A certified upper bound on the distance from the curve to the chord
 /// [C(0), C(1)]: the largest distance from a control point to that segment
-/// (the curve lies in the convex hull of its control points, weights > 0).
+/// (the curve lies in the convex hull of its control points, weights > 0, and
+/// the distance to a segment is a convex function). O(n d).
 double control_polygon_flatness(const BezierCurve& curve);
+
+/// A certified upper bound (up to rounding, far below
+/// tolerances::kFlattenRoundingAllowance x scale) on the largest distance from
+/// a point of C restricted to [t0, t1] (0 <= t0 < t1 <= 1) to the segment
+/// [C(t0), C(t1)]. Plane polynomial curves of degree <= 3: the exact maximum
+/// of the signed distance to the chord's line (a cubic in t, maximised at
+/// the roots of a quadratic), combined with the largest overshoot beyond the
+/// chord's ends as sqrt(F^2 + O^2) when the curve runs past them. Otherwise:
+/// the piece is split at its middle and the bound is the largest distance
+/// from the halves' control points to the segment (convex hull property).
+/// O(1) or O(n^2 d).
+double chord_deviation_bound(const BezierCurve& curve, double t0, double t1);
 
 }  // namespace casteljau
