@@ -1,5 +1,7 @@
 #include "casteljau/bezier/bezier_curve.hpp"
 
+#include "casteljau/core/tolerance.hpp"
+
 #include <cassert>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +11,12 @@ namespace casteljau {
 
 Expected<BezierCurve> BezierCurve::make(PointArray control_points, std::vector<double> weights) {
   if (control_points.empty()) return Error{"the control polygon is empty, a Bézier curve needs at least one control point"};
+  if (control_points.size() > static_cast<std::size_t>(tolerances::kMaxBezierDegree) + 1) {
+    return Error{std::to_string(control_points.size()) + " control points make a Bézier curve of degree " +
+                 std::to_string(control_points.size() - 1) + ", above the limit " +
+                 std::to_string(tolerances::kMaxBezierDegree) +
+                 " (evaluation costs O(n^2) per point); interpolate the points or split them into pieces"};
+  }
   for (std::size_t i = 0; i < control_points.coordinates().size(); ++i) {
     const std::size_t d = control_points.dimension();
     if (auto ok = check_finite(control_points.coordinates()[i],

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <span>
 #include <string>
@@ -12,6 +15,10 @@
 #include "casteljau/bezier/split.hpp"
 #include "casteljau/core/vec.hpp"
 #include "../bezier/de_casteljau.hpp"
+
+#if defined(__AVX__) || defined(__AVX512F__)
+#include <immintrin.h>
+#endif
 
 // Method and proof of the guarantee: docs/flattening.md. In short: greedy
 // furthest reach (each segment as long as a certified deviation bound allows),
@@ -32,6 +39,16 @@ constexpr double kGoodEnough = 0.96;
 constexpr double kBracket = 0.985;
 // After this many trials the largest certified step is kept as it is.
 constexpr int kMaxTrials = 6;
+
+// --- the plane cubics' fast path (plane_cubic_parameters) -------------------
+// Grid cells on which the parabola estimate's density is integrated for the
+// first proposal.
+constexpr int kDensityCells = 32;
+// Measure per piece the redistribution aims at (a piece of measure 1 deviates
+// by the budget): the margin absorbs the error of the interpolated measure.
+constexpr double kEquidistributionAim = 0.99;
+// Certification passes before greedy furthest reach takes over.
+constexpr int kPasses = 4;
 
 /// Distance from point p to the segment [a, b] (any dimension; a == b allowed).
 double distance_to_segment(std::span<const double> p, std::span<const double> a, std::span<const double> b) {
@@ -85,6 +102,96 @@ std::pair<double, double> cubic_range(double c1, double c2, double c3) {
   return {std::min({0.0, p1, p2, p3}), std::max({0.0, p1, p2, p3})};
 }
 
+// ---- the fast path for plane cubics: equidistributed proposals, certified in batches ----
+
+/// One lane of SIMD arithmetic, or kLanes of them (GCC/clang vector extension,
+/// as in src/bezier/points_at.cpp); the certification kernel is written once
+/// for both. Targets without AVX (em++ included) use the scalar lane only.
+#if defined(__AVX512F__)
+constexpr int kLanes = 8;
+#elif defined(__AVX__)
+constexpr int kLanes = 4;
+#else
+constexpr int kLanes = 1;
+#endif
+
+inline double splat(double x, double) { return x; }
+inline double root(double x) { return std::sqrt(x); }
+inline double absolute(double x) { return std::fabs(x); }
+inline double larger(double x, double y) { return x > y ? x : y; }
+inline double smaller(double x, double y) { return x < y ? x : y; }
+inline double with_sign_of(double x, double s) { return std::copysign(x, s); }
+inline double unit_clamp_lane(double s) { return unit_clamp(s); }
+
+#if defined(__AVX__) || defined(__AVX512F__)
+typedef double Pack __attribute__((vector_size(kLanes * sizeof(double))));
+inline Pack splat(double x, Pack) {
+  Pack v;
+  for (int l = 0; l < kLanes; ++l) v[l] = x;
+  return v;
+}
+#if defined(__AVX512F__)
+// The masked form (all lanes on): g++ 12's plain _mm512_sqrt_pd starts from an
+// undefined vector and trips -Wmaybe-uninitialized.
+inline Pack root(Pack x) { return _mm512_mask_sqrt_pd(x, 0xFF, x); }
+#else
+inline Pack root(Pack x) { return _mm256_sqrt_pd(x); }
+#endif
+inline Pack absolute(Pack x) { return x < 0.0 ? -x : x; }
+inline Pack larger(Pack x, Pack y) { return x > y ? x : y; }
+inline Pack smaller(Pack x, Pack y) { return x < y ? x : y; }
+// Differs from copysign only for s = -0, where either sign gives the same
+// pair of quadratic roots.
+inline Pack with_sign_of(Pack x, Pack s) { return s < 0.0 ? -x : x; }
+// NaN compares false: clamped to 0, as unit_clamp.
+inline Pack unit_clamp_lane(Pack s) { return s > 0.0 ? (s < 1.0 ? s : splat(1.0, s)) : splat(0.0, s); }
+#endif
+
+/// Critical points of p(s) = s (c1 + s (c2 + s c3)) in [0, 1] (stable
+/// quadratic formula, as cubic_peak), returned as the values p(s1), p(s2).
+template <class R>
+inline void critical_values(R c1, R c2, R c3, R& p1, R& p2) {
+  const R a = 3.0 * c3, b = 2.0 * c2;
+  const R discriminant = larger(b * b - 4.0 * a * c1, splat(0.0, a));
+  const R q = -0.5 * (b + with_sign_of(root(discriminant), b));
+  const R s1 = unit_clamp_lane(q / a), s2 = unit_clamp_lane(c1 / q);
+  p1 = s1 * (c1 + s1 * (c2 + s1 * c3));
+  p2 = s2 * (c1 + s2 * (c2 + s2 * c3));
+}
+
+/// Power-form coefficients of a plane cubic, laid out for the batch kernel.
+struct PowerForm {
+  double c1x, c1y, c2x, c2y, c3x, c3y;
+};
+
+/// (bound / limit)^2 for the pieces [a, a + h] of lanes: the same exact bound
+/// as PlaneCubic::deviation (largest |F| from the critical points; the
+/// overshoot O from the exact range of G, zero when the curve stays over the
+/// chord; bound = sqrt(F^2 + O^2) / |d|). Lanes whose chord is shorter than the
+/// limit get -1: the caller certifies them with the hull bound instead.
+template <class R>
+inline R squared_ratio(const PowerForm& k, R a, R h, double limit2) {
+  const R three_a = 3.0 * a;
+  const R hx = k.c2x + three_a * k.c3x, hy = k.c2y + three_a * k.c3y;  // C''(a)/2
+  const R fx = k.c1x + a * (k.c2x + hx), fy = k.c1y + a * (k.c2y + hy);  // C'(a)
+  const R h2 = h * h, h3 = h2 * h;
+  const R q1x = h * fx, q1y = h * fy, q2x = h2 * hx, q2y = h2 * hy, q3x = h3 * k.c3x, q3y = h3 * k.c3y;
+  const R dx = q1x + q2x + q3x, dy = q1y + q2y + q3y;
+  const R length2 = dx * dx + dy * dy;
+  const R f1 = dx * q1y - dy * q1x, f2 = dx * q2y - dy * q2x, f3 = dx * q3y - dy * q3x;
+  const R g1 = dx * q1x + dy * q1y, g2 = dx * q2x + dy * q2y, g3 = dx * q3x + dy * q3y;
+  R p1, p2, r1, r2;
+  critical_values(f1, f2, f3, p1, p2);
+  critical_values(g1, g2, g3, r1, r2);
+  const R across = larger(absolute(f1 + f2 + f3), larger(absolute(p1), absolute(p2)));
+  const R g_end = g1 + g2 + g3;
+  const R lowest = smaller(smaller(r1, r2), g_end), highest = larger(larger(r1, r2), g_end);
+  const R overshoot = larger(larger(-lowest, highest - length2), splat(0.0, a));
+  const R ratio = (across * across + overshoot * overshoot) / (length2 * limit2);
+  // !(x >= y) also sends NaN to the hull bound.
+  return length2 >= limit2 && length2 >= std::numeric_limits<double>::min() ? ratio : splat(-1.0, a);
+}
+
 /// A plane polynomial curve of degree <= 3 in power form, c0 + c1 t + c2 t^2
 /// + c3 t^3, with its Taylor expansion at a start parameter a:
 /// C(a + h s) - C(a) = q1 s + q2 s^2 + q3 s^3, q1 = h C'(a), q2 = h^2 C''(a)/2,
@@ -96,8 +203,6 @@ class PlaneCubic {
     Vec2 p[4];
     for (int i = 0; i <= degree_; ++i) {
       p[i] = points.vec<2>(static_cast<std::size_t>(i));
-      rows_[2 * i] = p[i][0];
-      rows_[2 * i + 1] = p[i][1];
     }
     // Bernstein to power basis (expand the Bernstein polynomials; Farin §3.6).
     switch (degree_) {
@@ -112,25 +217,19 @@ class PlaneCubic {
     }
   }
 
-  /// C(t) with the arithmetic of point_at: the same de Casteljau steps
-  /// (detail::lerp_step on the same operands), so the same bits.
-  Vec2 point(double t) const {
-    if (degree_ == 3) {
-      const double s = 1.0 - t;
-      Vec2 out;
-      for (int j = 0; j < 2; ++j) {
-        const double p01 = detail::lerp_step(rows_[j], rows_[2 + j], s, t);
-        const double p12 = detail::lerp_step(rows_[2 + j], rows_[4 + j], s, t);
-        const double p23 = detail::lerp_step(rows_[4 + j], rows_[6 + j], s, t);
-        const double p012 = detail::lerp_step(p01, p12, s, t), p123 = detail::lerp_step(p12, p23, s, t);
-        out[j] = detail::lerp_step(p012, p123, s, t);
-      }
-      return out;
-    }
-    double rows[8];
-    std::copy(rows_, rows_ + 8, rows);
-    detail::de_casteljau_in_place(rows, degree_, 2, t);
-    return {{rows[0], rows[1]}};
+  /// The power-form coefficients c1, c2, c3.
+  PowerForm power_form() const { return {c1_[0], c1_[1], c2_[0], c2_[1], c3_[0], c3_[1]}; }
+
+  /// The parabola estimate of the segments needed per unit of t: a piece
+  /// [t, t + h] deviates about h^2 k, k = |C' x C''/2| / (4 |C'|), so a piece of
+  /// deviation `limit` spans h = sqrt(limit / k) and the density is
+  /// sqrt(k / limit) (0 where it is undefined: C' = 0, a point).
+  double density(double t, double limit) const {
+    const Vec2 first = c1_ + t * (2.0 * c2_ + (3.0 * t) * c3_), half_second = c2_ + (3.0 * t) * c3_;
+    const double turn = cross(first, half_second);
+    const double k2 = (turn * turn) / (16.0 * dot(first, first) * limit * limit);
+    const double rho = std::sqrt(std::sqrt(k2));
+    return rho <= std::numeric_limits<double>::max() ? rho : 0.0;  // NaN and inf to 0
   }
 
   /// Taylor coefficients at a: C'(a) and C''(a)/2.
@@ -181,7 +280,6 @@ class PlaneCubic {
   }
 
   int degree_;
-  double rows_[8] = {};
   Vec2 c1_{}, c2_{}, c3_{};
   Vec2 first_{}, half_second_{};
 };
@@ -293,12 +391,12 @@ Expected<double> segment_budget(const BezierCurve& curve, Tolerance tolerance) {
   return tolerance.distance - allowance;
 }
 
-template <class Sink>
-Status flatten_plane_cubic(const BezierCurve& curve, double limit, long max_segments, Sink& sink) {
-  const auto& p = curve.control_points();
-  PlaneCubic cubic(p);
+/// Greedy furthest reach on a plane cubic (the fallback of the fast path):
+/// appends t_1 .. t_m = 1 to `parameters` (t_0 = 0 already there).
+Status greedy_plane_cubic(const PlaneCubic& curve_form, double limit, long max_segments,
+                          std::vector<double>& parameters) {
+  PlaneCubic cubic = curve_form;
   const double aim = std::sqrt(kAim * limit);
-  sink.add(0.0, p[0]);
   double a = 0.0, guess = 1.0, previous_scale = 0.0;
   long segments = 0;
   while (a < 1.0) {
@@ -314,14 +412,150 @@ Status flatten_plane_cubic(const BezierCurve& curve, double limit, long max_segm
     if (h <= 0.0) return cannot_certify(a);
     if (++segments > max_segments) return too_many_segments(max_segments);
     const double b = h >= 1.0 - a ? 1.0 : a + h;
-    if (b == 1.0) {
-      sink.add(1.0, p[p.size() - 1]);
-    } else {
-      sink.add(b, cubic.point(b));
-    }
+    parameters.push_back(b);
     a = b;
     guess = h;
   }
+  return {};
+}
+
+/// ratio[i] = (bound of [t[i], t[i+1]] / limit)^2 for i < count, kLanes
+/// pieces per kernel call; chords shorter than the limit by the hull bound.
+void certify_pieces(const PlaneCubic& cubic, const PowerForm& form, const double* t, long count, double limit,
+                    double* ratio) {
+  const double limit2 = limit * limit;
+  long i = 0;
+#if defined(__AVX__) || defined(__AVX512F__)
+  for (; i + kLanes <= count; i += kLanes) {
+    Pack a, b;
+    std::memcpy(&a, t + i, sizeof a);
+    std::memcpy(&b, t + i + 1, sizeof b);
+    const Pack r = squared_ratio(form, a, b - a, limit2);
+    std::memcpy(ratio + i, &r, sizeof r);
+  }
+#endif
+  for (; i < count; ++i) ratio[i] = squared_ratio(form, t[i], t[i + 1] - t[i], limit2);
+  for (i = 0; i < count; ++i) {
+    if (ratio[i] >= 0.0) continue;
+    PlaneCubic piece = cubic;
+    piece.start(t[i]);
+    const double bound = piece.deviation(t[i + 1] - t[i], limit) / limit;
+    ratio[i] = bound * bound;
+  }
+}
+
+/// measure[i] = ratio[i]^(1/4): the piece's length in units of a segment
+/// whose deviation is the limit (deviation ~ h^2 locally). Returns the sum.
+double piece_measures(const double* ratio, long count, double* measure) {
+  long i = 0;
+#if defined(__AVX__) || defined(__AVX512F__)
+  for (; i + kLanes <= count; i += kLanes) {
+    Pack r;
+    std::memcpy(&r, ratio + i, sizeof r);
+    r = root(root(r));
+    std::memcpy(measure + i, &r, sizeof r);
+  }
+#endif
+  for (; i < count; ++i) measure[i] = std::sqrt(std::sqrt(ratio[i]));
+  double total = 0.0;
+  for (i = 0; i < count; ++i) total += measure[i];
+  return total;
+}
+
+/// Breakpoints out[0..count] = 0 < ... < 1 splitting the cumulative measure
+/// (piecewise linear through t[i] with the measures of the pieces
+/// [t[i], t[i+1]], i < n) into `count` equal parts. False when rounding
+/// would make them not strictly increasing.
+bool equidistribute(const double* t, const double* measure, long n, double total, long count, double* out) {
+  out[0] = 0.0;
+  out[count] = 1.0;
+  const double step = total / static_cast<double>(count);
+  long i = 0;
+  double below = 0.0;  // measure of [0, t[i]]
+  for (long k = 1; k < count; ++k) {
+    const double target = static_cast<double>(k) * step;
+    while (i + 1 < n && below + measure[i] < target) below += measure[i++];
+    const double fraction = std::clamp((target - below) / measure[i], 0.0, 1.0);
+    out[k] = t[i] + fraction * (t[i + 1] - t[i]);
+    if (!(out[k] > out[k - 1])) return false;
+  }
+  return out[count - 1] < 1.0;
+}
+
+/// The parameters t_0 = 0 < ... < t_m = 1 of a plane cubic's flattening.
+/// Greedy furthest reach is serial: each segment waits for the previous
+/// one's end. Here the breakpoints are proposed all at once and certified in
+/// batches instead (docs/flattening.md):
+///  1. the parabola estimate's density sqrt(k / limit), integrated on a grid,
+///     gives the count and a first equidistributed proposal;
+///  2. every piece is certified by the exact bound; its measure
+///     (bound / limit)^(1/2) is about additive, so redistributing the
+///     breakpoints to equal measure, with the count the total asks for,
+///     equalises the deviations;
+///  3. the smallest count whose pieces all certify is kept, after at most
+///     kPasses certifications; if none did, greedy furthest reach decides.
+/// Only certified pieces are ever returned.
+Status plane_cubic_parameters(const PlaneCubic& cubic, double limit, long max_segments,
+                              std::vector<double>& parameters) {
+  const PowerForm form = cubic.power_form();
+  // 1. The proposal from the parabola estimate (trapezoid rule on the grid).
+  double grid[kDensityCells + 1], grid_measure[kDensityCells];
+  double previous = cubic.density(0.0, limit), total = 0.0;
+  grid[0] = 0.0;
+  for (int j = 1; j <= kDensityCells; ++j) {
+    grid[j] = static_cast<double>(j) / kDensityCells;
+    const double next = cubic.density(grid[j], limit);
+    grid_measure[j - 1] = 0.5 * (previous + next) / kDensityCells;
+    total += grid_measure[j - 1];
+    previous = next;
+  }
+  const auto pieces_for = [](double measure) {
+    return std::max(1.0, std::ceil(measure / kEquidistributionAim));
+  };
+  if (!(pieces_for(total) <= 2.0 * static_cast<double>(max_segments) + 64.0)) {
+    // Far beyond the cap (or not finite): greedy reports it exactly.
+    parameters.assign(1, 0.0);
+    return greedy_plane_cubic(cubic, limit, max_segments, parameters);
+  }
+  long count = static_cast<long>(pieces_for(total));
+  std::vector<double> trial(static_cast<std::size_t>(count) + 1), ratio, measure, best;
+  bool proposed = equidistribute(grid, grid_measure, kDensityCells, total, count, trial.data());
+  long best_count = 0, failed_count = 0;
+  // 2-3. Certify, keep the best certified proposal, redistribute.
+  for (int pass = 0; proposed && pass < kPasses; ++pass) {
+    ratio.resize(static_cast<std::size_t>(count));
+    measure.resize(static_cast<std::size_t>(count));
+    certify_pieces(cubic, form, trial.data(), count, limit, ratio.data());
+    const bool certified = std::all_of(ratio.begin(), ratio.end(), [](double r) { return r <= 1.0; });
+    const double measured = piece_measures(ratio.data(), count, measure.data());
+    long wanted = static_cast<long>(std::min(pieces_for(measured), 2.0 * static_cast<double>(count) + 1.0));
+    if (std::getenv("FLATTEN_DEBUG")) {
+      int fails = 0; double worst = 0, least = 9;
+      for (double r : ratio) { fails += r > 1.0; worst = std::max(worst, r); least = std::min(least, r); }
+      std::fprintf(stderr, "pass %d count %ld measured %.4f wanted %ld fails %d worst %.4f least %.4f\n", pass, count, measured, wanted, fails, worst, least);
+    }
+    if (certified) {
+      best.swap(trial);
+      best_count = count;
+      if (wanted >= count) break;  // no smaller count is in sight
+    } else {
+      failed_count = std::max(failed_count, count);
+      wanted = std::max(wanted, failed_count + 1);
+      if (best_count > 0 && wanted >= best_count) break;
+    }
+    if (!std::isfinite(measured)) break;
+    const double* from = certified ? best.data() : trial.data();
+    std::vector<double> next(static_cast<std::size_t>(wanted) + 1);
+    proposed = equidistribute(from, measure.data(), count, measured, wanted, next.data());
+    trial.swap(next);
+    count = wanted;
+  }
+  if (best_count == 0) {
+    parameters.assign(1, 0.0);
+    return greedy_plane_cubic(cubic, limit, max_segments, parameters);
+  }
+  if (best_count > max_segments) return too_many_segments(max_segments);
+  parameters = std::move(best);
   return {};
 }
 
@@ -354,12 +588,19 @@ bool is_plane_cubic(const BezierCurve& curve) {
   return !curve.is_rational() && curve.dimension() == 2 && curve.degree() <= 3;
 }
 
-template <class Sink>
-Status flatten_into(const BezierCurve& curve, Tolerance tolerance, long max_segments, Sink& sink) {
+/// The budget, then the parameters of a plane cubic's flattening (fast path).
+Status plane_cubic_flattening(const BezierCurve& curve, Tolerance tolerance, long max_segments,
+                              std::vector<double>& parameters) {
   auto limit = segment_budget(curve, tolerance);
   if (!limit) return limit.error();
-  return is_plane_cubic(curve) ? flatten_plane_cubic(curve, *limit, max_segments, sink)
-                               : flatten_general(curve, *limit, max_segments, sink);
+  return plane_cubic_parameters(PlaneCubic(curve.control_points()), *limit, max_segments, parameters);
+}
+
+template <class Sink>
+Status flatten_general_into(const BezierCurve& curve, Tolerance tolerance, long max_segments, Sink& sink) {
+  auto limit = segment_budget(curve, tolerance);
+  if (!limit) return limit.error();
+  return flatten_general(curve, *limit, max_segments, sink);
 }
 
 }  // namespace
@@ -386,17 +627,38 @@ Expected<Polyline> flatten(const BezierCurve& curve, Tolerance tolerance) {
 }
 
 Expected<Polyline> flatten(const BezierCurve& curve, Tolerance tolerance, long max_segments) {
+  if (is_plane_cubic(curve)) {
+    std::vector<double> parameters;
+    if (auto ok = plane_cubic_flattening(curve, tolerance, max_segments, parameters); !ok) return ok.error();
+    // Vertices by the batch evaluator, bit for bit point_at (the same de
+    // Casteljau steps); the ends are the end control points exactly.
+    const std::size_t count = parameters.size();
+    const auto& p = curve.control_points();
+    std::vector<double> coordinates(2 * count);
+    points_at(curve, std::span<const double>(parameters).subspan(1, count - 2),
+              std::span<double>(coordinates).subspan(2, 2 * (count - 2)));
+    std::copy(p[0].begin(), p[0].end(), coordinates.begin());
+    std::copy(p[p.size() - 1].begin(), p[p.size() - 1].end(), coordinates.end() - 2);
+    return Polyline{PointArray::from_trusted(2, std::move(coordinates)), std::move(parameters)};
+  }
   PolylineSink sink;
   sink.coordinates.reserve(static_cast<std::size_t>(128 * curve.dimension()));
   sink.parameters.reserve(128);
-  if (auto ok = flatten_into(curve, tolerance, max_segments, sink); !ok) return ok.error();
+  if (auto ok = flatten_general_into(curve, tolerance, max_segments, sink); !ok) return ok.error();
   return Polyline{PointArray::from_trusted(curve.dimension(), std::move(sink.coordinates)),
                   std::move(sink.parameters)};
 }
 
 Expected<long> flatten_segment_count(const BezierCurve& curve, Tolerance tolerance) {
+  if (is_plane_cubic(curve)) {
+    std::vector<double> parameters;
+    if (auto ok = plane_cubic_flattening(curve, tolerance, tolerances::kMaxFlattenSegments, parameters); !ok)
+      return ok.error();
+    return static_cast<long>(parameters.size()) - 1;
+  }
   CountingSink sink;
-  if (auto ok = flatten_into(curve, tolerance, tolerances::kMaxFlattenSegments, sink); !ok) return ok.error();
+  if (auto ok = flatten_general_into(curve, tolerance, tolerances::kMaxFlattenSegments, sink); !ok)
+    return ok.error();
   return sink.vertices - 1;
 }
 

@@ -84,6 +84,9 @@ TEST(BezierCurveMake, RefusesBadInputWithItsPlace) {
   EXPECT_EQ(message(BezierCurve::make(polygon, {1, 1})),
             "2 weights for 3 control points, there must be one weight per control point");
   EXPECT_EQ(PointArray::make(0, {}).error().message, "dimension 0 is not >= 1");
+  EXPECT_NE(message(BezierCurve::make(PointArray::zeros(2, 10'002))).find("degree 10001, above the limit 10000"),
+            std::string::npos);
+  EXPECT_TRUE(BezierCurve::make(PointArray::zeros(2, 10'001)).has_value());
   EXPECT_EQ(PointArray::make(2, {1, 2, 3}).error().message, "3 coordinates do not make whole 2-dimensional points");
 }
 

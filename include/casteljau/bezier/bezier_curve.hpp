@@ -15,7 +15,8 @@ namespace casteljau {
 /// A regular value; built from outside data only through make().
 class BezierCurve {
  public:
-  /// Validates and builds: at least one control point, all coordinates finite,
+  /// Validates and builds: at least one control point and at most
+  /// tolerances::kMaxBezierDegree + 1, all coordinates finite,
   /// and `weights` either empty (polynomial) or one finite weight > 0 per point.
   /// Errors name the field: "weight 2 is -1, weights must be > 0".
   static Expected<BezierCurve> make(PointArray control_points, std::vector<double> weights = {});

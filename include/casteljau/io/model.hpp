@@ -3,14 +3,18 @@
 // CLI, the playground), and what every front end needs to do with one
 // without knowing its kind. The only std::variant of the library (style rule 1).
 
+#include <cstddef>
 #include <span>
+#include <string>
 #include <variant>
 #include <vector>
 
 #include "casteljau/bezier/bezier_curve.hpp"
 #include "casteljau/bezier/piecewise_bezier.hpp"
+#include "casteljau/core/tolerance.hpp"
 
 namespace casteljau {
+
 
 /// Every model kind of model JSON version 1 that this version implements.
 /// Later layers (B-splines, surfaces) add their types here.
@@ -22,7 +26,9 @@ struct Interval {
   double upper = 1.0;
   /// lower + f (upper - lower).
   double lerp(double f) const { return lower + f * (upper - lower); }
+  /// lower <= u <= upper (false for NaN).
   bool contains(double u) const { return lower <= u && u <= upper; }
+  friend bool operator==(const Interval&, const Interval&) = default;
 };
 
 /// The model's parameter domain: [0,1] for a Bézier curve, [0,m] for m pieces.
@@ -31,10 +37,18 @@ Interval domain_of(const Model& model);
 /// The dimension of the space the model lives in.
 int dimension_of(const Model& model);
 
-/// The model's points at the parameters `us` (any order) into out (size us.size() * d).
+/// The number of control points of the model (all pieces together; a point
+/// shared by two pieces counts twice).
+std::size_t control_point_count(const Model& model);
+
+/// The model's points at the parameters `us` (any order) into out (size
+/// us.size() * d), bit for bit as point_at. Parameters outside the domain
+/// extrapolate (see bezier/evaluate.hpp): front ends check them first.
 void points_at(const Model& model, std::span<const double> us, std::span<double> out);
 
-/// The k-th derivative at u (k = 0: the point).
+/// The k-th derivative at u (k = 0: the point), k >= 0. For a piecewise curve
+/// at a junction u = i, the derivative of piece i (the one to the right), and
+/// at u = m that of the last piece.
 Point derivative_at(const Model& model, double u, int order);
 
 /// The model's type name in model JSON ("bezier", "piecewise_bezier").

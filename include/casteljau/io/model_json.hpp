@@ -12,15 +12,43 @@
 
 namespace casteljau {
 
-/// Parses model JSON text; `source` names it in errors ("model.json: line 3,
-/// column 5: ..." for syntax errors, "model.json: models[1].control_points[2][0]
-/// is not a number" for bad fields, "unknown field 'colour' in models[0]").
+/// Parses model JSON text (nlohmann-json's SAX parser feeding our own checks);
+/// `source` names it in errors. Messages are "<source>, <where>: <what>":
+/// - syntax errors give the line and column (1-based; the column counts UTF-8
+///   characters): "model.json, line 3, column 5: syntax error while parsing
+///   object key - invalid literal; last read: '{x'";
+/// - numbers that overflow a double: "model.json, line 2, column 40,
+///   control_points[1][0]: the number 1e999 overflows to infinity";
+/// - bad fields name their path: "model.json, models[1].control_points[2][0]:
+///   expected a number, found a string", "model.json, models[0]: unknown field
+///   'colour' (a bezier model has type, control_points, weights)";
+/// - types of the interface this version does not implement (bspline,
+///   bezier_surface, bspline_surface, coons): "... is not supported by this
+///   version of casteljau";
+/// - empty control polygons, mixed dimensions, weights <= 0, a weights count
+///   that differs from the control points', duplicate keys, more than
+///   tolerances::kMaxControlPoints control points in one model.
+/// O(size of the text); holds the parsed document in memory once.
 Expected<std::vector<Model>> parse_models_json(std::string_view text, const std::string& source);
 
-/// Reads and parses a model JSON file.
+/// Reads and parses a model JSON file (errors name the file as given).
 Expected<std::vector<Model>> read_models_json(const std::filesystem::path& path);
 
-/// The model as model JSON (one object), numbers in shortest round-trip form.
+/// Reads the models of a file that is either model JSON or a CSV point set;
+/// a point set is the control polygon of one polynomial Bézier curve. The
+/// format is chosen by the extension (".json" JSON, ".csv" CSV, any case),
+/// otherwise by content: JSON when the first character that is not blank
+/// (after an optional byte order mark) is '{', else CSV.
+Expected<std::vector<Model>> read_models(const std::filesystem::path& path);
+
+/// The model as model JSON (one object, one line), numbers in shortest
+/// round-trip form, so parse_models_json(to_json(m)) gives m back exactly.
+/// A piecewise curve writes polynomial pieces as arrays of points and
+/// rational pieces as bezier objects.
 std::string to_json(const Model& model);
+
+/// Several models: the single object for one model, {"models": [...]} for
+/// more, ending with a newline.
+std::string models_to_json(const std::vector<Model>& models);
 
 }  // namespace casteljau

@@ -1,0 +1,536 @@
+#include "casteljau/io/model_json.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "casteljau/io/csv.hpp"
+#include "casteljau/io/file.hpp"
+#include "text.hpp"
+
+namespace casteljau {
+namespace {
+
+using json = nlohmann::json;
+using io_detail::in_quotes;
+
+// ---------------------------------------------------------------------------
+// Parsing: nlohmann's SAX parser drives our own document builder, which
+// knows where it is (for messages), refuses duplicate keys (the DOM parser
+// silently keeps the last one) and stops early on huge inputs.
+
+/// A failure found while parsing, before any field is checked.
+struct SyntaxFailure {
+  std::size_t offset = 0;  // byte offset of the offending character
+  std::string path;        // where in the document, when known
+  std::string what;
+};
+
+/// The 1-based "line L, column C" of a byte offset; the column counts UTF-8
+/// characters (continuation bytes 10xxxxxx are not counted), as editors do.
+std::string line_and_column(std::string_view text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  std::size_t line = 1, line_start = 0;
+  for (std::size_t i = 0; i < offset; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
+  }
+  std::size_t column = 1;
+  for (std::size_t i = line_start; i < offset; ++i)
+    if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) ++column;
+  return fmt::format("line {}, column {}", line, column);
+}
+
+class DocumentBuilder {
+ public:
+  json root;
+  std::optional<SyntaxFailure> failure;
+
+  // nlohmann's SAX interface (nlohmann::json_sax<json>), by duck typing.
+  bool null() { return add(json(nullptr)); }
+  bool boolean(bool value) { return add(json(value)); }
+  bool number_integer(json::number_integer_t value) { return add(json(value)); }
+  bool number_unsigned(json::number_unsigned_t value) { return add(json(value)); }
+  bool number_float(json::number_float_t value, const std::string&) { return add(json(value)); }
+  bool string(std::string& value) { return add(json(std::move(value))); }
+  bool binary(json::binary_t&) { return fail_here("binary values are not JSON"); }  // never for JSON text
+  bool start_object(std::size_t) { return open(json::object()); }
+  bool start_array(std::size_t) { return open(json::array()); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool key(std::string& name) {
+    Frame& frame = stack_.back();
+    if (frame.container->contains(name)) {
+      frame.key = name;
+      return fail_here("the key " + in_quotes(name) + " appears twice in the same object");
+    }
+    frame.key = std::move(name);
+    return true;
+  }
+  bool parse_error(std::size_t position, const std::string& last_token, const nlohmann::detail::exception& error) {
+    // `position` counts the bytes read, the offending one included, so the
+    // offending byte is at position - 1 (at the end of the text for an
+    // unexpected end of input).
+    const std::size_t offset = position > 0 ? position - 1 : 0;
+    if (error.id == 406) {  // out_of_range.406: a number beyond the range of double
+      // The whole number token has been read: point at its first character.
+      const std::size_t start = position >= last_token.size() ? position - last_token.size() : 0;
+      failure = SyntaxFailure{start, pending_path(),
+                              "the number " + in_quotes(last_token) + " overflows to infinity, numbers must be finite"};
+      return false;
+    }
+    // nlohmann's text is "[json.exception.parse_error.101] parse error at line
+    // 1, column 4: syntax error while parsing ...": keep what follows "column N: ".
+    std::string_view text = error.what();
+    if (const auto column = text.find(", column "); column != text.npos) {
+      if (const auto colon = text.find(": ", column); colon != text.npos) text.remove_prefix(colon + 2);
+    } else if (const auto bracket = text.find("] "); bracket != text.npos) {
+      text.remove_prefix(bracket + 2);
+    }
+    failure = SyntaxFailure{offset, {}, io_detail::printable(text, 200)};
+    return false;
+  }
+
+ private:
+  struct Frame {
+    json* container;
+    std::string key;  // objects: the key of the member being read
+  };
+
+  /// Where the next value goes: the path of the value that is about to be
+  /// added (failures are found before it is).
+  std::string pending_path() const {
+    std::string out;
+    for (std::size_t i = 0; i < stack_.size(); ++i) {
+      const Frame& frame = stack_[i];
+      const bool top = i + 1 == stack_.size();
+      if (frame.container->is_array()) {
+        const std::size_t size = frame.container->size();
+        out += fmt::format("[{}]", top ? size : size - 1);
+      } else {
+        if (!out.empty()) out += '.';
+        out += io_detail::printable(frame.key);
+      }
+    }
+    return out;
+  }
+
+  bool fail_here(std::string what) {
+    failure = SyntaxFailure{offset_hint_, pending_path(), std::move(what)};
+    return false;
+  }
+
+  /// Adds a value where the parser is; returns where it lives, or nullptr
+  /// when a limit refuses it.
+  json* place(json&& value) {
+    if (++values_ > tolerances::kMaxInputValues) {
+      fail_here(fmt::format("more than {} JSON values, the limit for one model file", tolerances::kMaxInputValues));
+      return nullptr;
+    }
+    if (stack_.empty()) {
+      root = std::move(value);
+      return &root;
+    }
+    Frame& frame = stack_.back();
+    if (frame.container->is_array()) {
+      if (frame.container->size() >= tolerances::kMaxControlPoints) {
+        fail_here(
+            fmt::format("an array of more than {} elements, the limit for one model", tolerances::kMaxControlPoints));
+        return nullptr;
+      }
+      frame.container->push_back(std::move(value));
+      return &frame.container->back();
+    }
+    json& slot = (*frame.container)[frame.key];
+    slot = std::move(value);
+    return &slot;
+  }
+
+  bool add(json&& value) { return place(std::move(value)) != nullptr; }
+
+  bool open(json&& container) {
+    json* where = place(std::move(container));
+    if (where == nullptr) return false;
+    stack_.push_back(Frame{where, {}});
+    return true;
+  }
+
+  bool close() {
+    stack_.pop_back();
+    return true;
+  }
+
+  std::vector<Frame> stack_;
+  std::size_t values_ = 0;
+  // Failures found by the builder itself (duplicate keys, limits) carry no
+  // byte offset from the parser; they are reported by path only.
+  std::size_t offset_hint_ = std::string_view::npos;
+};
+
+// ---------------------------------------------------------------------------
+// Checking the document, field by field. Paths are written as in JavaScript:
+// models[1].control_points[2][0]; the empty path is the top-level object.
+
+std::string member(const std::string& path, std::string_view name) {
+  return path.empty() ? std::string(name) : path + "." + std::string(name);
+}
+std::string element(const std::string& path, std::size_t index) { return fmt::format("{}[{}]", path, index); }
+
+/// "a string ('abc')", "the number 3", "an array": what a value is, for messages.
+std::string describe(const json& value) {
+  switch (value.type()) {
+    case json::value_t::null:
+      return "null";
+    case json::value_t::boolean:
+      return value.get<bool>() ? "true" : "false";
+    case json::value_t::string:
+      return "the string " + in_quotes(value.get_ref<const std::string&>());
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float:
+      return fmt::format("the number {}", value.get<double>());
+    case json::value_t::object:
+      return "an object";
+    case json::value_t::array:
+      return "an array";
+    default:
+      return "a value that is not JSON";
+  }
+}
+
+class Checker {
+ public:
+  explicit Checker(std::string source) : source_(std::move(source)) {}
+
+  Error at(const std::string& path, const std::string& what) const {
+    return Error{source_ + ", " + (path.empty() ? std::string("the top level") : path) + ": " + what};
+  }
+
+  Expected<std::vector<Model>> document(const json& root) {
+    if (!root.is_object()) {
+      return at("", "expected an object (one model, or {\"models\": [...]} for several), found " + describe(root));
+    }
+    if (!root.contains("models")) {
+      auto model = this->model(root, "");
+      if (!model) return model.error();
+      return std::vector<Model>{std::move(*model)};
+    }
+    for (const auto& [name, value] : root.items()) {
+      if (name != "models")
+        return at("", "unknown field " + in_quotes(name) + " (a file of several models has only the field 'models')");
+    }
+    const json& models = root["models"];
+    if (!models.is_array()) return at("models", "expected an array of models, found " + describe(models));
+    if (models.empty()) return at("models", "the array is empty, expected at least one model");
+    std::vector<Model> result;
+    result.reserve(models.size());
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      auto model = this->model(models[i], element("models", i));
+      if (!model) return model.error();
+      result.push_back(std::move(*model));
+    }
+    return result;
+  }
+
+ private:
+  /// Refuses any member not in `allowed`; `kind` names the model in the message.
+  Status known_fields(const json& object, const std::string& path, std::initializer_list<std::string_view> allowed,
+                      const char* kind) const {
+    for (const auto& [name, value] : object.items()) {
+      bool known = false;
+      for (const auto field : allowed) known = known || name == field;
+      if (!known) {
+        std::string list;
+        for (const auto field : allowed) list += (list.empty() ? "" : ", ") + std::string(field);
+        return at(path, "unknown field " + in_quotes(name) + " (" + kind + " has the fields " + list + ")");
+      }
+    }
+    return {};
+  }
+
+  Expected<Model> model(const json& value, const std::string& path) {
+    if (!value.is_object()) return at(path, "expected a model object, found " + describe(value));
+    if (!value.contains("type")) return at(path, "missing field 'type' (bezier, piecewise_bezier)");
+    const json& type = value["type"];
+    if (!type.is_string()) return at(member(path, "type"), "expected a string, found " + describe(type));
+    const auto& name = type.get_ref<const std::string&>();
+    budget_ = tolerances::kMaxControlPoints;  // per model
+    if (name == "bezier") {
+      auto curve = bezier(value, path);
+      if (!curve) return curve.error();
+      return Model{std::move(*curve)};
+    }
+    if (name == "piecewise_bezier") return piecewise(value, path);
+    if (name == "bspline" || name == "bezier_surface" || name == "bspline_surface" || name == "coons") {
+      return at(member(path, "type"), "the model type " + in_quotes(name) +
+                                          " is not supported by this version of casteljau (supported: bezier, "
+                                          "piecewise_bezier)");
+    }
+    return at(member(path, "type"), "unknown model type " + in_quotes(name) +
+                                        " (model JSON version 1 has bezier, piecewise_bezier, bspline, "
+                                        "bezier_surface, bspline_surface, coons)");
+  }
+
+  Expected<BezierCurve> bezier(const json& value, const std::string& path) {
+    if (auto ok = known_fields(value, path, {"type", "control_points", "weights"}, "a bezier model"); !ok)
+      return ok.error();
+    if (!value.contains("control_points")) return at(path, "missing field 'control_points'");
+    const std::string points_path = member(path, "control_points");
+    auto points = this->points(value["control_points"], points_path);
+    if (!points) return points.error();
+    std::vector<double> weights;
+    if (value.contains("weights")) {
+      const std::string weights_path = member(path, "weights");
+      const json& list = value["weights"];
+      if (!list.is_array()) return at(weights_path, "expected an array of numbers, found " + describe(list));
+      if (list.size() != points->size()) {
+        return at(weights_path,
+                  fmt::format("{} weight{} for {} control point{}, expected one weight per control point", list.size(),
+                              list.size() == 1 ? "" : "s", points->size(), points->size() == 1 ? "" : "s"));
+      }
+      weights.reserve(list.size());
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        auto w = number(list[i], element(weights_path, i));
+        if (!w) return w.error();
+        if (!(*w > 0.0))
+          return at(element(weights_path, i), fmt::format("the weight {} is not > 0, weights must be positive", *w));
+        weights.push_back(*w);
+      }
+    }
+    auto curve = BezierCurve::make(std::move(*points), std::move(weights));
+    if (!curve) return at(path, curve.error().message);  // checked above; kept as a safety net
+    return curve;
+  }
+
+  Expected<Model> piecewise(const json& value, const std::string& path) {
+    if (auto ok = known_fields(value, path, {"type", "pieces"}, "a piecewise_bezier model"); !ok) return ok.error();
+    if (!value.contains("pieces")) return at(path, "missing field 'pieces'");
+    const std::string pieces_path = member(path, "pieces");
+    const json& list = value["pieces"];
+    if (!list.is_array()) return at(pieces_path, "expected an array of pieces, found " + describe(list));
+    if (list.empty()) return at(pieces_path, "the array is empty, a piecewise Bézier curve needs at least one piece");
+    std::vector<BezierCurve> pieces;
+    pieces.reserve(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string piece_path = element(pieces_path, i);
+      auto curve = piece_curve(list[i], piece_path);
+      if (!curve) return curve.error();
+      if (!pieces.empty() && curve->dimension() != pieces.front().dimension()) {
+        return at(piece_path, fmt::format("the piece has dimension {}, but {} has dimension {}", curve->dimension(),
+                                          element(pieces_path, 0), pieces.front().dimension()));
+      }
+      pieces.push_back(std::move(*curve));
+    }
+    auto curve = PiecewiseBezierCurve::make(std::move(pieces));
+    if (!curve) return at(path, curve.error().message);  // checked above; kept as a safety net
+    return Model{std::move(*curve)};
+  }
+
+  /// One piece: an array of control points, or (rational) a bezier model object.
+  Expected<BezierCurve> piece_curve(const json& piece, const std::string& path) {
+    if (piece.is_object()) {
+      if (!piece.contains("type")) return at(path, "missing field 'type' (a piece object is a bezier model)");
+      const json& type = piece["type"];
+      if (!type.is_string() || type.get_ref<const std::string&>() != "bezier") {
+        return at(member(path, "type"),
+                  "expected \"bezier\" (a piece object is a bezier model), found " + describe(type));
+      }
+      return bezier(piece, path);
+    }
+    if (!piece.is_array()) {
+      return at(path,
+                "expected a piece (an array of control points, or a bezier model object), found " + describe(piece));
+    }
+    auto points = this->points(piece, path);
+    if (!points) return points.error();
+    auto curve = BezierCurve::make(std::move(*points));
+    if (!curve) return at(path, curve.error().message);  // points() checked it; a safety net
+    return curve;
+  }
+
+  /// A control polygon: a non-empty array of points, all of one dimension.
+  Expected<PointArray> points(const json& list, const std::string& path) {
+    if (!list.is_array()) return at(path, "expected an array of points, found " + describe(list));
+    if (list.empty()) return at(path, "the control polygon is empty, a Bézier curve needs at least one control point");
+    if (list.size() > budget_) {
+      return at(path,
+                fmt::format("more than {} control points in one model, the limit", tolerances::kMaxControlPoints));
+    }
+    budget_ -= list.size();
+    std::size_t dimension = 0;
+    std::vector<double> coordinates;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string point_path = element(path, i);
+      const json& point = list[i];
+      if (!point.is_array()) return at(point_path, "expected a point (an array of numbers), found " + describe(point));
+      if (point.empty()) return at(point_path, "the point has no coordinates");
+      if (i == 0) {
+        dimension = point.size();
+        coordinates.reserve(list.size() * dimension);
+      } else if (point.size() != dimension) {
+        return at(point_path, fmt::format("{} coordinate{}, but {} has {} (all points must have the same dimension)",
+                                          point.size(), point.size() == 1 ? "" : "s", element(path, 0), dimension));
+      }
+      for (std::size_t j = 0; j < point.size(); ++j) {
+        auto x = number(point[j], element(point_path, j));
+        if (!x) return x.error();
+        coordinates.push_back(*x);
+      }
+    }
+    return PointArray::from_trusted(static_cast<int>(dimension), std::move(coordinates));
+  }
+
+  Expected<double> number(const json& value, const std::string& path) const {
+    if (!value.is_number()) return at(path, "expected a number, found " + describe(value));
+    const double x = value.get<double>();
+    // The parser already refuses overflow; a finite check here costs nothing.
+    if (!std::isfinite(x)) return at(path, "the number is not finite");
+    return x;
+  }
+
+  std::string source_;
+  std::size_t budget_ = tolerances::kMaxControlPoints;
+};
+
+// ---------------------------------------------------------------------------
+// Writing.
+
+/// A coordinate in the shortest text that reads back to the same double.
+/// -0 is written "-0.0": JSON readers take "-0" for the integer 0 and lose the sign.
+void write_number(fmt::memory_buffer& out, double x) {
+  if (x == 0.0 && std::signbit(x)) {
+    fmt::format_to(std::back_inserter(out), "-0.0");
+  } else {
+    fmt::format_to(std::back_inserter(out), "{}", x);
+  }
+}
+
+void write_points(fmt::memory_buffer& out, const PointArray& points) {
+  out.push_back('[');
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i > 0) out.push_back(',');
+    out.push_back('[');
+    const auto point = points[i];
+    for (std::size_t j = 0; j < point.size(); ++j) {
+      if (j > 0) out.push_back(',');
+      write_number(out, point[j]);
+    }
+    out.push_back(']');
+  }
+  out.push_back(']');
+}
+
+void write_bezier(fmt::memory_buffer& out, const BezierCurve& curve) {
+  fmt::format_to(std::back_inserter(out), "{{\"type\":\"bezier\",\"control_points\":");
+  write_points(out, curve.control_points());
+  if (curve.is_rational()) {
+    fmt::format_to(std::back_inserter(out), ",\"weights\":[");
+    for (std::size_t i = 0; i < curve.weights().size(); ++i) {
+      if (i > 0) out.push_back(',');
+      write_number(out, curve.weights()[i]);
+    }
+    out.push_back(']');
+  }
+  out.push_back('}');
+}
+
+void write_model(fmt::memory_buffer& out, const Model& model) {
+  if (const auto* curve = std::get_if<BezierCurve>(&model)) {
+    write_bezier(out, *curve);
+    return;
+  }
+  const auto& piecewise = std::get<PiecewiseBezierCurve>(model);
+  fmt::format_to(std::back_inserter(out), "{{\"type\":\"piecewise_bezier\",\"pieces\":[");
+  for (std::size_t i = 0; i < piecewise.pieces().size(); ++i) {
+    if (i > 0) out.push_back(',');
+    const auto& piece = piecewise.pieces()[i];
+    if (piece.is_rational()) {
+      write_bezier(out, piece);
+    } else {
+      write_points(out, piece.control_points());
+    }
+  }
+  fmt::format_to(std::back_inserter(out), "]}}");
+}
+
+}  // namespace
+
+Expected<std::vector<Model>> parse_models_json(std::string_view text, const std::string& source) {
+  DocumentBuilder builder;
+  bool parsed = false;
+  try {
+    // strict: nothing but blanks may follow the document.
+    parsed = json::sax_parse(text.begin(), text.end(), &builder, json::input_format_t::json, true);
+  } catch (const json::exception& error) {
+    // sax_parse reports through parse_error(); this is only a safety net so
+    // that no exception leaves the library.
+    return Error{source + ": " + io_detail::printable(error.what(), 200)};
+  }
+  if (!parsed) {
+    if (!builder.failure) return Error{source + ": the JSON text could not be parsed"};
+    const SyntaxFailure& failure = *builder.failure;
+    std::string where = source;
+    if (failure.offset != std::string_view::npos) where += ", " + line_and_column(text, failure.offset);
+    if (!failure.path.empty()) where += ", " + failure.path;
+    return Error{where + ": " + failure.what};
+  }
+  return Checker(source).document(builder.root);
+}
+
+Expected<std::vector<Model>> read_models_json(const std::filesystem::path& path) {
+  const auto text = read_text_file(path);
+  if (!text) return text.error();
+  return parse_models_json(*text, display_name(path));
+}
+
+Expected<std::vector<Model>> read_models(const std::filesystem::path& path) {
+  const auto text = read_text_file(path);
+  if (!text) return text.error();
+  const std::string source = display_name(path);
+  const std::string name = path.string();
+  bool is_json = false;
+  if (io_detail::has_extension(name, ".json")) {
+    is_json = true;
+  } else if (!io_detail::has_extension(name, ".csv")) {
+    const std::string_view content = io_detail::without_byte_order_mark(*text);
+    const auto first = content.find_first_not_of(" \t\r\n");
+    is_json = first != std::string_view::npos && content[first] == '{';
+  }
+  if (is_json) return parse_models_json(*text, source);
+  auto points = parse_points_csv(*text, source);
+  if (!points) return points.error();
+  auto curve = BezierCurve::make(std::move(*points));
+  if (!curve) return with_context(curve.error(), source);
+  return std::vector<Model>{Model{std::move(*curve)}};
+}
+
+std::string to_json(const Model& model) {
+  fmt::memory_buffer out;
+  write_model(out, model);
+  return fmt::to_string(out);
+}
+
+std::string models_to_json(const std::vector<Model>& models) {
+  fmt::memory_buffer out;
+  if (models.size() == 1) {
+    write_model(out, models.front());
+  } else {
+    fmt::format_to(std::back_inserter(out), "{{\"models\":[\n");
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      write_model(out, models[i]);
+      if (i + 1 < models.size()) out.push_back(',');
+      out.push_back('\n');
+    }
+    out.push_back(']');
+    out.push_back('}');
+  }
+  out.push_back('\n');
+  return fmt::to_string(out);
+}
+
+}  // namespace casteljau

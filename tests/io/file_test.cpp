@@ -1,0 +1,130 @@
+// Files in and out (io/file.hpp): reading whole files with clear errors and
+// the size limit; atomic writing that never leaves a half-written file.
+#include "casteljau/io/file.hpp"
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "io_test_support.hpp"
+
+namespace casteljau {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::size_t entries_in(const fs::path& folder) {
+  return static_cast<std::size_t>(std::distance(fs::directory_iterator(folder), fs::directory_iterator{}));
+}
+
+TEST(ReadTextFile, ReadsEveryByte) {
+  test::TemporaryFolder folder;
+  const std::string text("a\r\nb\0c\xff\n", 8);
+  test::write_text(folder / "f", text);
+  EXPECT_EQ(*read_text_file(folder / "f"), text);
+  test::write_text(folder / "empty", "");
+  EXPECT_EQ(*read_text_file(folder / "empty"), "");
+}
+
+TEST(ReadTextFile, ErrorsNameTheFile) {
+  test::TemporaryFolder folder;
+  EXPECT_EQ(read_text_file(folder / "missing.csv").error().message,
+            "cannot open '" + (folder / "missing.csv").string() + "': No such file or directory");
+  EXPECT_EQ(read_text_file(folder.path()).error().message,
+            "'" + folder.path().string() + "' is a directory, not a file");
+}
+
+TEST(ReadTextFile, RefusesFilesLargerThanTheLimitBeforeReading) {
+  test::TemporaryFolder folder;
+  const fs::path big = folder / "big.json";
+  test::write_text(big, "");
+  // A sparse file: 1 GiB + 1 byte of size, no disk used, nothing read.
+  fs::resize_file(big, tolerances::kMaxInputFileBytes + 1);
+  EXPECT_EQ(read_text_file(big).error().message,
+            "'" + big.string() + "' is 1.0 GiB, larger than the 1 GiB limit for input files");
+}
+
+TEST(ReadTextFile, ReadsPipesToo) {
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);
+  ASSERT_EQ(::write(fds[1], "0,1\n", 4), 4);
+  ::close(fds[1]);
+  EXPECT_EQ(*read_text_file("/dev/fd/" + std::to_string(fds[0])), "0,1\n");
+  ::close(fds[0]);
+}
+
+TEST(WriteFileAtomically, WritesAndReplaces) {
+  test::TemporaryFolder folder;
+  const fs::path out = folder / "out.csv";
+  ASSERT_TRUE(write_file_atomically(out, "1,2\n").has_value());
+  EXPECT_EQ(test::read_text(out), "1,2\n");
+  ASSERT_TRUE(write_file_atomically(out, "3\n").has_value());
+  EXPECT_EQ(test::read_text(out), "3\n");
+  ASSERT_TRUE(write_file_atomically(out, "").has_value());
+  EXPECT_EQ(test::read_text(out), "");
+  EXPECT_EQ(entries_in(folder.path()), 1u);  // no temporary file left behind
+}
+
+TEST(WriteFileAtomically, GivesNewFilesTheUmaskPermissionsAndKeepsExistingOnes) {
+  test::TemporaryFolder folder;
+  const mode_t old_mask = ::umask(022);
+  ASSERT_TRUE(write_file_atomically(folder / "new", "x").has_value());
+  struct stat info {};
+  ASSERT_EQ(::stat((folder / "new").c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0644u);
+
+  test::write_text(folder / "kept", "old");
+  ::chmod((folder / "kept").c_str(), 0640);
+  ASSERT_TRUE(write_file_atomically(folder / "kept", "new").has_value());
+  ASSERT_EQ(::stat((folder / "kept").c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0640u);
+  ::umask(old_mask);
+}
+
+TEST(WriteFileAtomically, FollowsASymbolicLink) {
+  test::TemporaryFolder folder;
+  test::write_text(folder / "target", "old");
+  fs::create_symlink("target", folder / "link");
+  ASSERT_TRUE(write_file_atomically(folder / "link", "new").has_value());
+  EXPECT_TRUE(fs::is_symlink(folder / "link"));
+  EXPECT_EQ(test::read_text(folder / "target"), "new");
+}
+
+TEST(WriteFileAtomically, FailsCleanlyWithoutTouchingTheTarget) {
+  test::TemporaryFolder folder;
+  EXPECT_EQ(write_file_atomically(folder / "no" / "such" / "out.csv", "x").error().message,
+            "cannot write '" + (folder / "no" / "such" / "out.csv").string() + "': No such file or directory");
+  fs::create_directory(folder / "dir");
+  EXPECT_EQ(write_file_atomically(folder / "dir", "x").error().message,
+            "'" + (folder / "dir").string() + "' is a directory, not a file");
+  EXPECT_EQ(entries_in(folder.path()), 1u);
+}
+
+TEST(WriteFileAtomically, AFailedWriteLeavesTheOldFileWhole) {
+  // Make the write itself fail half-way: a file size limit of 4 KiB (the
+  // kernel refuses the rest with EFBIG instead of SIGXFSZ when that signal is ignored).
+  test::TemporaryFolder folder;
+  const fs::path out = folder / "out.csv";
+  test::write_text(out, "the old contents\n");
+  const auto old_handler = ::signal(SIGXFSZ, SIG_IGN);
+  rlimit old_limit{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old_limit), 0);
+  rlimit small = old_limit;
+  small.rlim_cur = 4096;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  const auto status = write_file_atomically(out, std::string(100000, 'x'));
+  ::setrlimit(RLIMIT_FSIZE, &old_limit);
+  ::signal(SIGXFSZ, old_handler);
+  ASSERT_FALSE(status.has_value());
+  EXPECT_EQ(status.error().message, "cannot write '" + out.string() + "': File too large");
+  EXPECT_EQ(test::read_text(out), "the old contents\n");
+  EXPECT_EQ(entries_in(folder.path()), 1u);
+}
+
+}  // namespace
+}  // namespace casteljau

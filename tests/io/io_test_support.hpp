@@ -1,0 +1,69 @@
+#pragma once
+// Helpers shared by the io tests: a private temporary folder, file writing,
+// arbitrary finite doubles (every bit pattern, not a grid), bitwise equality.
+
+#include <rapidcheck.h>
+#include <stdlib.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+
+namespace casteljau::test {
+
+/// A fresh folder under the system's temporary folder, removed with its contents.
+class TemporaryFolder {
+ public:
+  TemporaryFolder() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "casteljau-io-test-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+    path_ = pattern;
+  }
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  ~TemporaryFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+inline std::uint64_t bits_of(double x) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits;
+}
+
+/// Any finite double, every bit pattern equally likely (so subnormals, -0,
+/// huge and tiny exponents all appear), plus a share of "plain" values.
+inline rc::Gen<double> any_finite_double() {
+  const auto from_bits = rc::gen::map(rc::gen::arbitrary<std::uint64_t>(), [](std::uint64_t bits) {
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    return std::isfinite(x) ? x : 0.5;
+  });
+  const auto plain = rc::gen::map(rc::gen::inRange(-100000, 100001), [](int i) { return i / 64.0; });
+  return rc::gen::oneOf(from_bits, plain,
+                        rc::gen::element(0.0, -0.0, 0.1, 1e-320, 1.7976931348623157e308, -2.2250738585072014e-308));
+}
+
+}  // namespace casteljau::test
