@@ -1,6 +1,7 @@
 // The gallery of seed figures (issue "Foundation"): the seed notebook's
 // pictures (seed 004), the semicircle of seed 003, and figures that explain
 // subdivision, flattening, degree elevation and Bézier's vector form.
+#include "markup.hpp"
 #include "casteljau/render/gallery.hpp"
 
 #include <fmt/format.h>
@@ -329,19 +330,6 @@ GalleryFigure comb_figure(const BezierCurve& curve, int n) {
           single(fmt::format("Curvature comb of cycle({})", n), 800, 800, std::move(panel))};
 }
 
-std::string html_escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -444,7 +432,7 @@ std::string gallery_index_html(const std::vector<GalleryFigure>& figures) {
     html += fmt::format(
         "<figure id=\"{0}\">\n<h2>{1}</h2>\n<img src=\"{0}.svg\" alt=\"{1}\" width=\"{3}\" height=\"{4}\">\n"
         "<figcaption>{2} <a href=\"{0}.svg\">SVG</a> · <a href=\"{0}.png\">PNG</a></figcaption>\n</figure>\n",
-        f.name, html_escaped(f.figure.title), html_escaped(f.explanation), f.figure.width, f.figure.height);
+        f.name, detail::xml_escaped(f.figure.title), detail::xml_escaped(f.explanation), f.figure.width, f.figure.height);
   }
   html += "</body>\n</html>\n";
   return html;

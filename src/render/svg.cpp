@@ -6,6 +6,7 @@
 #include <string>
 #include <variant>
 
+#include "markup.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/render/write.hpp"
 
@@ -22,20 +23,6 @@ std::string number(double value) {
 
 std::string hex(Color c) { return fmt::format("#{:02x}{:02x}{:02x}", c.red, c.green, c.blue); }
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string points_attribute(const std::vector<Vec2>& points) {
   std::string out;
@@ -86,7 +73,7 @@ class SvgWriter {
         "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{0}\" height=\"{1}\" "
         "viewBox=\"0 0 {0} {1}\" font-family=\"DejaVu Sans, Bitstream Vera Sans, Verdana, sans-serif\">\n",
         number(scene.width), number(scene.height));
-    if (!scene.title.empty()) out_ += fmt::format("<title>{}</title>\n", escaped(scene.title));
+    if (!scene.title.empty()) out_ += fmt::format("<title>{}</title>\n", detail::xml_escaped(scene.title));
     out_ += fmt::format("<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"#ffffff\"/>\n", number(scene.width),
                         number(scene.height));
     for (const auto& shape : scene.shapes) std::visit([this](const auto& s) { draw(s); }, shape);
@@ -116,7 +103,7 @@ class SvgWriter {
     if (t.rotation_degrees != 0.0)
       out_ += fmt::format(" transform=\"rotate({} {} {})\"", number(-t.rotation_degrees), number(t.position[0]),
                           number(t.position[1]));
-    out_ += fmt::format(">{}</text>\n", escaped(t.text));
+    out_ += fmt::format(">{}</text>\n", detail::xml_escaped(t.text));
   }
   void draw(const ClipBegin& c) {
     const int id = next_clip_++;
