@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <span>
 #include <string>
@@ -20,10 +18,14 @@
 #include <immintrin.h>
 #endif
 
-// Method and proof of the guarantee: docs/flattening.md. In short: greedy
-// furthest reach (each segment as long as a certified deviation bound allows),
-// the reach found by a secant search on sqrt(deviation), which is about
-// linear in the step for a smooth curve (deviation ~ kappa h^2 / 8).
+// Method and proof of the guarantee: docs/flattening.md. In short: every
+// segment is certified by an upper bound on its chord deviation. Plane
+// polynomial cubics (the fast path): breakpoints proposed all at once so that
+// the deviations come out equal (about the greedy optimum's count), certified
+// in SIMD batches, greedy steps only where a proposal fails or falls short.
+// Every other curve: greedy furthest reach, each reach found by a secant
+// search on sqrt(deviation), about linear in the step for a smooth curve
+// (deviation ~ kappa h^2 / 8).
 
 namespace casteljau {
 namespace {
@@ -47,8 +49,15 @@ constexpr int kDensityCells = 32;
 // Measure per piece the redistribution aims at (a piece of measure 1 deviates
 // by the budget): the margin absorbs the error of the interpolated measure.
 constexpr double kEquidistributionAim = 0.99;
-// Certification passes before greedy furthest reach takes over.
-constexpr int kPasses = 4;
+// A certified piece whose ratio (bound / limit)^2 is at least kNearlyFull x
+// (planned measure)^4 is kept by the sweep: its step is then within about
+// 1 - kNearlyFull^(1/4) ~ 3% of the step planned for it.
+constexpr double kNearlyFull = 0.88;
+// Sweep events (a piece replaced by a greedy step and the rest redistributed)
+// before greedy furthest reach finishes the curve.
+constexpr int kMaxEvents = 8;
+// Proposals of at most this many pieces go to greedy furthest reach instead.
+constexpr double kGreedyBelow = 8.0;
 
 /// Distance from point p to the segment [a, b] (any dimension; a == b allowed).
 double distance_to_segment(std::span<const double> p, std::span<const double> a, std::span<const double> b) {
@@ -104,15 +113,14 @@ std::pair<double, double> cubic_range(double c1, double c2, double c3) {
 
 // ---- the fast path for plane cubics: equidistributed proposals, certified in batches ----
 
-/// One lane of SIMD arithmetic, or kLanes of them (GCC/clang vector extension,
-/// as in src/bezier/points_at.cpp); the certification kernel is written once
-/// for both. Targets without AVX (em++ included) use the scalar lane only.
+/// One lane of SIMD arithmetic (double), or kLanes of them (Pack, a GCC/clang
+/// vector extension as in src/bezier/points_at.cpp): the kernels below are
+/// written once for both. Targets without AVX (em++ included) use the scalar
+/// lane only.
 #if defined(__AVX512F__)
 constexpr int kLanes = 8;
 #elif defined(__AVX__)
 constexpr int kLanes = 4;
-#else
-constexpr int kLanes = 1;
 #endif
 
 inline double splat(double x, double) { return x; }
@@ -121,7 +129,9 @@ inline double absolute(double x) { return std::fabs(x); }
 inline double larger(double x, double y) { return x > y ? x : y; }
 inline double smaller(double x, double y) { return x < y ? x : y; }
 inline double with_sign_of(double x, double s) { return std::copysign(x, s); }
+inline double quarter_root(double x) { return std::sqrt(std::sqrt(x)); }
 inline double unit_clamp_lane(double s) { return unit_clamp(s); }
+inline bool every(bool lane) { return lane; }
 
 #if defined(__AVX__) || defined(__AVX512F__)
 typedef double Pack __attribute__((vector_size(kLanes * sizeof(double))));
@@ -145,6 +155,34 @@ inline Pack smaller(Pack x, Pack y) { return x < y ? x : y; }
 inline Pack with_sign_of(Pack x, Pack s) { return s < 0.0 ? -x : x; }
 // NaN compares false: clamped to 0, as unit_clamp.
 inline Pack unit_clamp_lane(Pack s) { return s > 0.0 ? (s < 1.0 ? s : splat(1.0, s)) : splat(0.0, s); }
+/// x^(1/4) in every lane, to about 2e-9 relative (measures and densities
+/// steer proposals, never certify): z ~ x^(-1/4) from the exponent bits
+/// (the bits of x, read as an integer, are about 2^52 (log2 x + 1023)), three
+/// Newton steps z <- z (5 - x z^4) / 4, then x z^3. Four multiplies a step
+/// instead of two square roots, the slowest vector instructions. 0 below
+/// 1e-280, x itself above 1e280, inf and NaN (where z^4 would leave the range).
+inline Pack quarter_root(Pack x) {
+  typedef long long Bits __attribute__((vector_size(kLanes * sizeof(long long))));
+  Bits bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  bits = 0x4feb0a3d70a3d70bLL - (bits >> 2);  // the offset centres the first guess's error (~10%)
+  Pack z;
+  std::memcpy(&z, &bits, sizeof z);
+  for (int step = 0; step < 3; ++step) {
+    const Pack z2 = z * z;
+    z = z * (1.25 - (0.25 * x) * (z2 * z2));
+  }
+  const Pack root4 = x * (z * z * z);
+  return x <= 1e280 ? (x >= 1e-280 ? root4 : splat(0.0, x)) : x;
+}
+
+/// Whether a comparison holds in every lane.
+template <class Mask>
+inline bool every(Mask lanes) {
+  bool all = true;
+  for (int l = 0; l < kLanes; ++l) all &= lanes[l] != 0;
+  return all;
+}
 #endif
 
 /// Critical points of p(s) = s (c1 + s (c2 + s c3)) in [0, 1] (stable
@@ -180,16 +218,54 @@ inline R squared_ratio(const PowerForm& k, R a, R h, double limit2) {
   const R length2 = dx * dx + dy * dy;
   const R f1 = dx * q1y - dy * q1x, f2 = dx * q2y - dy * q2x, f3 = dx * q3y - dy * q3x;
   const R g1 = dx * q1x + dy * q1y, g2 = dx * q2x + dy * q2y, g3 = dx * q3x + dy * q3y;
-  R p1, p2, r1, r2;
+  R p1, p2;
   critical_values(f1, f2, f3, p1, p2);
-  critical_values(g1, g2, g3, r1, r2);
   const R across = larger(absolute(f1 + f2 + f3), larger(absolute(p1), absolute(p2)));
-  const R g_end = g1 + g2 + g3;
-  const R lowest = smaller(smaller(r1, r2), g_end), highest = larger(larger(r1, r2), g_end);
-  const R overshoot = larger(larger(-lowest, highest - length2), splat(0.0, a));
+  // G's Bernstein coefficients 0, G1/3, (2 G1 + G2)/3, |d|^2 inside
+  // [0, |d|^2] in every lane prove that no lane overshoots (as in
+  // PlaneCubic::deviation): the range of G is then not needed.
+  const R three_length2 = 3.0 * length2, g12 = 2.0 * g1 + g2;
+  R overshoot = splat(0.0, a);
+  if (!every(g1 >= 0.0 && g1 <= three_length2 && g12 >= 0.0 && g12 <= three_length2)) {
+    R r1, r2;
+    critical_values(g1, g2, g3, r1, r2);
+    const R g_end = g1 + g2 + g3;
+    const R lowest = smaller(smaller(r1, r2), g_end), highest = larger(larger(r1, r2), g_end);
+    overshoot = larger(larger(-lowest, highest - length2), overshoot);
+  }
   const R ratio = (across * across + overshoot * overshoot) / (length2 * limit2);
   // !(x >= y) also sends NaN to the hull bound.
   return length2 >= limit2 && length2 >= std::numeric_limits<double>::min() ? ratio : splat(-1.0, a);
+}
+
+/// The parabola estimate of the segments needed per unit of t: a piece
+/// [t, t + h] deviates about h^2 k, k = |C' x C''/2| / (4 |C'|) (the distance
+/// of a parabola's chord), so a piece of deviation `limit` spans
+/// h = sqrt(limit / k) and the density is sqrt(k / limit) = (k^2 /
+/// limit^2)^(1/4); 0 where it is undefined (C' = 0, a point).
+template <class R>
+inline R density_at(const PowerForm& k, R t, double inverse_limit2) {
+  const R three_t = 3.0 * t;
+  const R hx = k.c2x + three_t * k.c3x, hy = k.c2y + three_t * k.c3y;
+  const R fx = k.c1x + t * (k.c2x + hx), fy = k.c1y + t * (k.c2y + hy);
+  const R turn = fx * hy - fy * hx;
+  const R k2 = (turn * turn) * inverse_limit2 / (16.0 * (fx * fx + fy * fy));
+  const R rho = quarter_root(k2);
+  return rho <= std::numeric_limits<double>::max() ? rho : splat(0.0, t);  // NaN and inf to 0
+}
+
+/// density_at for count parameters, kLanes at a time.
+void densities(const PowerForm& form, const double* t, int count, double inverse_limit2, double* out) {
+  int i = 0;
+#if defined(__AVX__) || defined(__AVX512F__)
+  for (; i + kLanes <= count; i += kLanes) {
+    Pack x;
+    std::memcpy(&x, t + i, sizeof x);
+    const Pack rho = density_at(form, x, inverse_limit2);
+    std::memcpy(out + i, &rho, sizeof rho);
+  }
+#endif
+  for (; i < count; ++i) out[i] = density_at(form, t[i], inverse_limit2);
 }
 
 /// A plane polynomial curve of degree <= 3 in power form, c0 + c1 t + c2 t^2
@@ -219,18 +295,6 @@ class PlaneCubic {
 
   /// The power-form coefficients c1, c2, c3.
   PowerForm power_form() const { return {c1_[0], c1_[1], c2_[0], c2_[1], c3_[0], c3_[1]}; }
-
-  /// The parabola estimate of the segments needed per unit of t: a piece
-  /// [t, t + h] deviates about h^2 k, k = |C' x C''/2| / (4 |C'|), so a piece of
-  /// deviation `limit` spans h = sqrt(limit / k) and the density is
-  /// sqrt(k / limit) (0 where it is undefined: C' = 0, a point).
-  double density(double t, double limit) const {
-    const Vec2 first = c1_ + t * (2.0 * c2_ + (3.0 * t) * c3_), half_second = c2_ + (3.0 * t) * c3_;
-    const double turn = cross(first, half_second);
-    const double k2 = (turn * turn) / (16.0 * dot(first, first) * limit * limit);
-    const double rho = std::sqrt(std::sqrt(k2));
-    return rho <= std::numeric_limits<double>::max() ? rho : 0.0;  // NaN and inf to 0
-  }
 
   /// Taylor coefficients at a: C'(a) and C''(a)/2.
   void start(double a) {
@@ -397,8 +461,8 @@ Status greedy_plane_cubic(const PlaneCubic& curve_form, double limit, long max_s
                           std::vector<double>& parameters) {
   PlaneCubic cubic = curve_form;
   const double aim = std::sqrt(kAim * limit);
-  double a = 0.0, guess = 1.0, previous_scale = 0.0;
-  long segments = 0;
+  double a = parameters.back(), guess = 1.0 - a, previous_scale = 0.0;
+  long segments = static_cast<long>(parameters.size()) - 1;
   while (a < 1.0) {
     cubic.start(a);
     // Scale the last step by the change of the parabola estimate (the step
@@ -444,118 +508,206 @@ void certify_pieces(const PlaneCubic& cubic, const PowerForm& form, const double
   }
 }
 
-/// measure[i] = ratio[i]^(1/4): the piece's length in units of a segment
+/// measure[i] = ratio[i]^(1/4) (quarter_root): the piece's length in units of a segment
 /// whose deviation is the limit (deviation ~ h^2 locally). Returns the sum.
 double piece_measures(const double* ratio, long count, double* measure) {
   long i = 0;
+  double total = 0.0;
 #if defined(__AVX__) || defined(__AVX512F__)
+  // Lane-wise partial sums: one serial chain of additions would cost more
+  // than the roots.
+  Pack sum = splat(0.0, Pack{});
   for (; i + kLanes <= count; i += kLanes) {
     Pack r;
     std::memcpy(&r, ratio + i, sizeof r);
-    r = root(root(r));
+    r = quarter_root(r);
     std::memcpy(measure + i, &r, sizeof r);
+    sum += r;
   }
+  for (int l = 0; l < kLanes; ++l) total += sum[l];
 #endif
-  for (; i < count; ++i) measure[i] = std::sqrt(std::sqrt(ratio[i]));
-  double total = 0.0;
-  for (i = 0; i < count; ++i) total += measure[i];
+  for (; i < count; ++i) {
+    measure[i] = quarter_root(ratio[i]);
+    total += measure[i];
+  }
   return total;
 }
 
-/// Breakpoints out[0..count] = 0 < ... < 1 splitting the cumulative measure
-/// (piecewise linear through t[i] with the measures of the pieces
-/// [t[i], t[i+1]], i < n) into `count` equal parts. False when rounding
-/// would make them not strictly increasing.
+/// Breakpoints out[0..count], from t[0] to t[n], splitting the cumulative
+/// measure (piecewise linear through the t[i], the piece [t[i], t[i+1]]
+/// holding measure[i], i < n, `total` in all) into `count` equal parts.
+/// False when rounding would make them not strictly increasing.
 bool equidistribute(const double* t, const double* measure, long n, double total, long count, double* out) {
-  out[0] = 0.0;
-  out[count] = 1.0;
+  out[0] = t[0];
   const double step = total / static_cast<double>(count);
-  long i = 0;
-  double below = 0.0;  // measure of [0, t[i]]
-  for (long k = 1; k < count; ++k) {
-    const double target = static_cast<double>(k) * step;
-    while (i + 1 < n && below + measure[i] < target) below += measure[i++];
-    const double fraction = std::clamp((target - below) / measure[i], 0.0, 1.0);
-    out[k] = t[i] + fraction * (t[i + 1] - t[i]);
-    if (!(out[k] > out[k - 1])) return false;
+  long k = 1;
+  double below = 0.0;  // measure of [t[0], t[i]]
+  for (long i = 0; i < n && k < count; ++i) {
+    const double above = below + measure[i];
+    // Targets k step inside this piece; one division per piece.
+    const double slope = (t[i + 1] - t[i]) / measure[i];
+    for (double target = static_cast<double>(k) * step; target < above && k < count;
+         target = static_cast<double>(++k) * step)
+      out[k] = t[i] + (target - below) * slope;
+    below = above;
   }
-  return out[count - 1] < 1.0;
+  for (; k < count; ++k) out[k] = t[n];  // a total rounded above the sum: caught below
+  out[count] = t[n];
+  for (k = 1; k <= count; ++k)
+    if (!(out[k] > out[k - 1])) return false;
+  return true;
 }
+
+/// How many pieces of a proposal, from its start, the sweep keeps: certified
+/// (ratio <= 1) and near the measure planned for them, ratio >= kNearlyFull x
+/// planned^4 (about 3% of the step at most); the last piece only certified.
+long accepted_prefix(const double* ratio, long count, double planned) {
+  const double planned2 = planned * planned, nearly_full = kNearlyFull * planned2 * planned2;
+  long k = 0;
+  while (k < count && ratio[k] <= 1.0 && ratio[k] >= nearly_full) ++k;
+  if (k + 1 == count && ratio[k] <= 1.0) ++k;
+  return k;
+}
+
+/// Working memory of the fast path: two proposals (breakpoints), the ratios
+/// and the measures of the current one's pieces. On the stack up to
+/// kStackPieces pieces, one allocation above.
+class Scratch {
+ public:
+  explicit Scratch(long pieces) : capacity_(pieces) {
+    double* base = local_;
+    if (pieces > kStackPieces) {
+      heap_.resize(4 * static_cast<std::size_t>(pieces + 1));
+      base = heap_.data();
+    }
+    const std::size_t stride = static_cast<std::size_t>(pieces) + 1;
+    t_ = base, next_ = base + stride, ratio = base + 2 * stride, measure = base + 3 * stride;
+  }
+  Scratch(const Scratch&) = delete;  // the pointers may point into local_
+  Scratch& operator=(const Scratch&) = delete;
+  long capacity() const { return capacity_; }
+  double* t() { return t_; }
+  double* next() { return next_; }
+  void swap() { std::swap(t_, next_); }
+  double* ratio;
+  double* measure;
+
+ private:
+  static constexpr long kStackPieces = 255;
+  long capacity_;
+  double* t_;
+  double* next_;
+  double local_[4 * (kStackPieces + 1)];
+  std::vector<double> heap_;
+};
 
 /// The parameters t_0 = 0 < ... < t_m = 1 of a plane cubic's flattening.
 /// Greedy furthest reach is serial: each segment waits for the previous
 /// one's end. Here the breakpoints are proposed all at once and certified in
 /// batches instead (docs/flattening.md):
 ///  1. the parabola estimate's density sqrt(k / limit), integrated on a grid,
-///     gives the count and a first equidistributed proposal;
-///  2. every piece is certified by the exact bound; its measure
-///     (bound / limit)^(1/2) is about additive, so redistributing the
-///     breakpoints to equal measure, with the count the total asks for,
-///     equalises the deviations;
-///  3. the smallest count whose pieces all certify is kept, after at most
-///     kPasses certifications; if none did, greedy furthest reach decides.
+///     gives a first proposal; every piece is certified by the exact bound;
+///     its measure (bound / limit)^(1/2), about linear in the step and so
+///     about additive, tells the count the curve needs; when that differs
+///     from the proposal's, the breakpoints are redistributed to equal
+///     measure with that count (which equalises the deviations) and certified;
+///  2. a sweep keeps the pieces in order while they are certified and near
+///     the measure planned for them (ratio >= kNearlyFull x planned^4); at the
+///     first that is not (an inflection or a cusp, where the measure is not
+///     additive), one greedy furthest-reach step replaces it and the rest of
+///     the curve is redistributed by this pass's measures and certified;
+///  3. after kMaxEvents such events, greedy furthest reach finishes the curve.
 /// Only certified pieces are ever returned.
 Status plane_cubic_parameters(const PlaneCubic& cubic, double limit, long max_segments,
                               std::vector<double>& parameters) {
   const PowerForm form = cubic.power_form();
-  // 1. The proposal from the parabola estimate (trapezoid rule on the grid).
-  double grid[kDensityCells + 1], grid_measure[kDensityCells];
-  double previous = cubic.density(0.0, limit), total = 0.0;
-  grid[0] = 0.0;
-  for (int j = 1; j <= kDensityCells; ++j) {
-    grid[j] = static_cast<double>(j) / kDensityCells;
-    const double next = cubic.density(grid[j], limit);
-    grid_measure[j - 1] = 0.5 * (previous + next) / kDensityCells;
-    total += grid_measure[j - 1];
-    previous = next;
+  // The proposal from the parabola estimate (trapezoid rule on the grid).
+  double grid[kDensityCells + 1], density[kDensityCells + 1], grid_measure[kDensityCells];
+  for (int j = 0; j <= kDensityCells; ++j) grid[j] = static_cast<double>(j) / kDensityCells;
+  densities(form, grid, kDensityCells + 1, 1.0 / (limit * limit), density);
+  double total = 0.0;
+  for (int j = 0; j < kDensityCells; ++j) {
+    grid_measure[j] = (0.5 / kDensityCells) * (density[j] + density[j + 1]);
+    total += grid_measure[j];
   }
-  const auto pieces_for = [](double measure) {
-    return std::max(1.0, std::ceil(measure / kEquidistributionAim));
-  };
-  if (!(pieces_for(total) <= 2.0 * static_cast<double>(max_segments) + 64.0)) {
-    // Far beyond the cap (or not finite): greedy reports it exactly.
-    parameters.assign(1, 0.0);
+  const auto pieces_for = [](double measure) { return std::max(1.0, std::ceil(measure / kEquidistributionAim)); };
+  parameters.assign(1, 0.0);
+  // A few segments: greedy is as fast, and the measure is the least additive
+  // there (its ceil loses the most). Far beyond the cap (or not finite):
+  // greedy reports the cap exactly, without the working memory for that many.
+  const double cap = static_cast<double>(max_segments);
+  if (!(pieces_for(total) > kGreedyBelow && pieces_for(total) <= cap + cap / 8.0 + 64.0))
     return greedy_plane_cubic(cubic, limit, max_segments, parameters);
-  }
   long count = static_cast<long>(pieces_for(total));
-  std::vector<double> trial(static_cast<std::size_t>(count) + 1), ratio, measure, best;
-  bool proposed = equidistribute(grid, grid_measure, kDensityCells, total, count, trial.data());
-  long best_count = 0, failed_count = 0;
-  // 2-3. Certify, keep the best certified proposal, redistribute.
-  for (int pass = 0; proposed && pass < kPasses; ++pass) {
-    ratio.resize(static_cast<std::size_t>(count));
-    measure.resize(static_cast<std::size_t>(count));
-    certify_pieces(cubic, form, trial.data(), count, limit, ratio.data());
-    const bool certified = std::all_of(ratio.begin(), ratio.end(), [](double r) { return r <= 1.0; });
-    const double measured = piece_measures(ratio.data(), count, measure.data());
-    long wanted = static_cast<long>(std::min(pieces_for(measured), 2.0 * static_cast<double>(count) + 1.0));
-    if (std::getenv("FLATTEN_DEBUG")) {
-      int fails = 0; double worst = 0, least = 9;
-      for (double r : ratio) { fails += r > 1.0; worst = std::max(worst, r); least = std::min(least, r); }
-      std::fprintf(stderr, "pass %d count %ld measured %.4f wanted %ld fails %d worst %.4f least %.4f\n", pass, count, measured, wanted, fails, worst, least);
+  // Room for a redistribution to a quarter more pieces; one that asks for
+  // more leaves the rest to greedy.
+  Scratch scratch(count + count / 4 + 16);
+  parameters.reserve(static_cast<std::size_t>(count) + 8);
+  bool proposed = equidistribute(grid, grid_measure, kDensityCells, total, count, scratch.t());
+  double planned = 1.0;
+  long prefix = 0;  // pieces of the current proposal the sweep keeps
+  if (proposed) {
+    certify_pieces(cubic, form, scratch.t(), count, limit, scratch.ratio);
+    total = piece_measures(scratch.ratio, count, scratch.measure);
+    const double wanted = pieces_for(total);
+    planned = total / wanted;
+    prefix = accepted_prefix(scratch.ratio, count, planned);
+    if (wanted != static_cast<double>(count) || prefix != count) {
+      // Redistribute by the measured measures, once.
+      proposed = wanted <= static_cast<double>(scratch.capacity()) &&
+                 equidistribute(scratch.t(), scratch.measure, count, total, static_cast<long>(wanted), scratch.next());
+      if (proposed) {
+        scratch.swap();
+        count = static_cast<long>(wanted);
+        certify_pieces(cubic, form, scratch.t(), count, limit, scratch.ratio);
+        piece_measures(scratch.ratio, count, scratch.measure);
+        prefix = accepted_prefix(scratch.ratio, count, planned);
+      }
     }
-    if (certified) {
-      best.swap(trial);
-      best_count = count;
-      if (wanted >= count) break;  // no smaller count is in sight
-    } else {
-      failed_count = std::max(failed_count, count);
-      wanted = std::max(wanted, failed_count + 1);
-      if (best_count > 0 && wanted >= best_count) break;
+  }
+  for (int event = 0; proposed && event < kMaxEvents; ++event) {
+    double* t = scratch.t();
+    const long k = prefix;
+    parameters.insert(parameters.end(), t + 1, t + k + 1);
+    if (k == count) break;
+    if (static_cast<long>(parameters.size()) - 1 >= max_segments) return too_many_segments(max_segments);
+    // One greedy step from the piece that failed or fell short, guessed from
+    // its ratio (deviation ~ h^2, ratio ~ h^4).
+    PlaneCubic piece = cubic;
+    const double a = t[k], width = t[k + 1] - a;
+    piece.start(a);
+    const double guess = width * std::sqrt(std::sqrt(kAim * kAim / scratch.ratio[k]));
+    const double aim = std::sqrt(kAim * limit);
+    const double h = furthest_step([&](double, double step) { return piece.deviation(step, limit); }, a,
+                                   std::isfinite(guess) && guess > 0.0 ? guess : width, limit, aim);
+    if (h <= 0.0) return cannot_certify(a);
+    const double b = h >= 1.0 - a ? 1.0 : a + h;
+    parameters.push_back(b);
+    if (b == 1.0) break;
+    // The rest [b, 1] with this pass's measures, the piece holding b in part.
+    long i = k;
+    while (i + 1 < count && t[i + 1] <= b) ++i;
+    scratch.measure[i] *= (t[i + 1] - b) / (t[i + 1] - t[i]);
+    t[i] = b;
+    double rest = 0.0;
+    for (long j = i; j < count; ++j) rest += scratch.measure[j];
+    const double wanted = pieces_for(rest);
+    proposed = std::isfinite(rest) && wanted <= static_cast<double>(scratch.capacity()) &&
+               equidistribute(t + i, scratch.measure + i, count - i, rest, static_cast<long>(wanted), scratch.next());
+    if (proposed) {
+      scratch.swap();
+      count = static_cast<long>(wanted);
+      planned = rest / wanted;
+      certify_pieces(cubic, form, scratch.t(), count, limit, scratch.ratio);
+      piece_measures(scratch.ratio, count, scratch.measure);
+      prefix = accepted_prefix(scratch.ratio, count, planned);
     }
-    if (!std::isfinite(measured)) break;
-    const double* from = certified ? best.data() : trial.data();
-    std::vector<double> next(static_cast<std::size_t>(wanted) + 1);
-    proposed = equidistribute(from, measure.data(), count, measured, wanted, next.data());
-    trial.swap(next);
-    count = wanted;
   }
-  if (best_count == 0) {
-    parameters.assign(1, 0.0);
-    return greedy_plane_cubic(cubic, limit, max_segments, parameters);
+  if (parameters.back() < 1.0) {
+    // Too many events, or a proposal rounding could not order: greedy ends it.
+    if (auto ok = greedy_plane_cubic(cubic, limit, max_segments, parameters); !ok) return ok;
   }
-  if (best_count > max_segments) return too_many_segments(max_segments);
-  parameters = std::move(best);
+  if (static_cast<long>(parameters.size()) - 1 > max_segments) return too_many_segments(max_segments);
   return {};
 }
 
@@ -603,6 +755,29 @@ Status flatten_general_into(const BezierCurve& curve, Tolerance tolerance, long 
   return flatten_general(curve, *limit, max_segments, sink);
 }
 
+/// Power of two 2^k that brings the curve's coordinates near 1, or k = 0 when
+/// they already are. The bounds square coordinate differences and cross
+/// products (up to the fourth power of the scale), which would overflow
+/// beyond about 1e77 and lose precision in subnormals below 1e-77.
+int rescaling_exponent(const BezierCurve& curve) {
+  const double scale = scale_of(curve.control_points());
+  if (scale == 0.0 || (scale < 0x1p100 && scale > 0x1p-100)) return 0;
+  int exponent = 0;
+  std::frexp(scale, &exponent);
+  return -exponent;
+}
+
+/// 2^k C: exact (a power-of-two factor only changes exponents), and every
+/// operation on it is exactly 2^k times the same operation on C, so its
+/// flattening has the same parameters and 2^k times the vertices.
+BezierCurve scaled_by_power_of_two(const BezierCurve& curve, int k) {
+  std::vector<double> coordinates(curve.control_points().coordinates().begin(),
+                                  curve.control_points().coordinates().end());
+  for (double& c : coordinates) c = std::ldexp(c, k);
+  return BezierCurve::from_trusted(PointArray::from_trusted(curve.dimension(), std::move(coordinates)),
+                                   {curve.weights().begin(), curve.weights().end()});
+}
+
 }  // namespace
 
 double control_polygon_flatness(const BezierCurve& curve) {
@@ -627,6 +802,12 @@ Expected<Polyline> flatten(const BezierCurve& curve, Tolerance tolerance) {
 }
 
 Expected<Polyline> flatten(const BezierCurve& curve, Tolerance tolerance, long max_segments) {
+  if (const int k = rescaling_exponent(curve); k != 0) {
+    auto line = flatten(scaled_by_power_of_two(curve, k), Tolerance{std::ldexp(tolerance.distance, k)}, max_segments);
+    if (line)
+      for (double& c : line->points.coordinates()) c = std::ldexp(c, -k);
+    return line;
+  }
   if (is_plane_cubic(curve)) {
     std::vector<double> parameters;
     if (auto ok = plane_cubic_flattening(curve, tolerance, max_segments, parameters); !ok) return ok.error();
@@ -650,6 +831,8 @@ Expected<Polyline> flatten(const BezierCurve& curve, Tolerance tolerance, long m
 }
 
 Expected<long> flatten_segment_count(const BezierCurve& curve, Tolerance tolerance) {
+  if (const int k = rescaling_exponent(curve); k != 0)
+    return flatten_segment_count(scaled_by_power_of_two(curve, k), Tolerance{std::ldexp(tolerance.distance, k)});
   if (is_plane_cubic(curve)) {
     std::vector<double> parameters;
     if (auto ok = plane_cubic_flattening(curve, tolerance, tolerances::kMaxFlattenSegments, parameters); !ok)

@@ -206,6 +206,88 @@ TEST(Flatten, W6CountsAreWithinFivePercentOfTheOptimum) {
   }
 }
 
+TEST(Flatten, W6PolylinesKeepEveryStructuralPromiseAtEveryTolerance) {
+  // From a few segments to tens of thousands: the plane cubics' fast path
+  // (proposals certified in batches, a sweep, greedy steps at inflections and
+  // cusps) keeps vertices on the curve bit for bit and agrees with the count.
+  for (const Shape& shape : w6_shapes()) {
+    const BezierCurve curve = plane_curve(shape.points);
+    for (double tolerance : {50.0, 10.0, 1.0, 1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7}) {
+      const auto line = flatten(curve, Tolerance{tolerance});
+      ASSERT_TRUE(line.has_value()) << shape.name << " at " << tolerance;
+      const auto& t = line->parameters;
+      ASSERT_EQ(line->points.size(), t.size());
+      ASSERT_GE(t.size(), 2u);
+      EXPECT_EQ(t.front(), 0.0);
+      EXPECT_EQ(t.back(), 1.0);
+      for (std::size_t i = 0; i + 1 < t.size(); ++i) ASSERT_LT(t[i], t[i + 1]) << shape.name << " at " << tolerance;
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        const Point q = point_at(curve, t[i]);
+        ASSERT_TRUE(std::equal(q.begin(), q.end(), line->points[i].begin())) << shape.name << " vertex " << i;
+      }
+      EXPECT_EQ(*flatten_segment_count(curve, Tolerance{tolerance}), static_cast<long>(t.size()) - 1);
+      if (t.size() < 2000) {
+        EXPECT_LE(polyline_deviation(curve, *line), tolerance) << shape.name << " at " << tolerance;
+      }
+    }
+  }
+}
+
+TEST(Flatten, TheCapIsExact) {
+  // A cap of exactly the count is met; one less is refused, not truncated.
+  for (const Shape& shape : w6_shapes()) {
+    const BezierCurve curve = plane_curve(shape.points);
+    for (double tolerance : {1.0, 0.01, 1e-4}) {
+      const long count = *flatten_segment_count(curve, Tolerance{tolerance});
+      const auto met = flatten(curve, Tolerance{tolerance}, count);
+      ASSERT_TRUE(met.has_value()) << shape.name;
+      EXPECT_EQ(static_cast<long>(met->parameters.size()) - 1, count);
+      const auto refused = flatten(curve, Tolerance{tolerance}, count - 1);
+      ASSERT_FALSE(refused.has_value()) << shape.name;
+      EXPECT_NE(refused.error().message.find("more than " + std::to_string(count - 1) + " segments"), std::string::npos)
+          << refused.error().message;
+    }
+  }
+}
+
+TEST(Flatten, PlaneCubicsWithInflectionsAndSharpTurnsStayWithinTolerance) {
+  // Where the deviation of a piece does not grow like its step squared (an
+  // inflection, a near-cusp, a loop's crossing), proposals from an additive
+  // measure fail or fall short and the sweep replaces them by greedy steps.
+  const std::vector<std::vector<double>> cases = {
+      {0, 0, 100, 0, 0, 100, 100, 100},   // one inflection (the W6 S-curve)
+      {0, 0, 100, 60, -40, 60, 60, 0},    // two inflections
+      {0, 0, 100, 100, 1, 100, 100, 0},   // sharper than the W6 near-cusp
+      {0, 0, 100, 100, 0, 100, 100, 0},   // a cusp-like turn through crossing tangents
+      {0, 0, 150, 100, -50, 100, 100, 0}, // a loop
+      {0, 0, 1e-3, 0, 100, 50, 100, 50.001}, // nearly repeated end control points
+      {0, 0, 100, 0, -100, 1, 1, 1},      // nearly collinear, doubling back twice: pieces across
+      {0, 0, 100, 1, -100, 1, 1, 0},      //   a turn run past their chord's ends (the overshoot)
+  };
+  for (const auto& xy : cases) {
+    const BezierCurve curve = plane_curve(xy);
+    for (double tolerance : {1.0, 1e-2, 1e-4}) {
+      const auto line = flatten(curve, Tolerance{tolerance});
+      ASSERT_TRUE(line.has_value());
+      EXPECT_LE(polyline_deviation(curve, *line), tolerance) << xy[2] << " at " << tolerance;
+      EXPECT_EQ(*flatten_segment_count(curve, Tolerance{tolerance}), static_cast<long>(line->parameters.size()) - 1);
+    }
+  }
+}
+
+TEST(Flatten, PieceWithAChordShorterThanTheToleranceIsCertifiedByItsHull) {
+  // Found by a random search: at 0.1 the last piece proposed for this cubic
+  // has a chord shorter than the tolerance (its direction is unreliable), and
+  // the convex hull bound that then takes over refuses it (a ratio above 1),
+  // so the sweep must replace it by greedy steps.
+  const BezierCurve curve = plane_curve({-0.54, -5.1, -37.02, 45.62, 71.95, 72.19, 62.65, 69.96});
+  for (double tolerance : {0.1, 0.05, 0.2}) {
+    const auto line = flatten(curve, Tolerance{tolerance});
+    ASSERT_TRUE(line.has_value());
+    EXPECT_LE(polyline_deviation(curve, *line), tolerance) << tolerance;
+  }
+}
+
 TEST(Flatten, StraightCurvesNeedOneSegment) {
   // Collinear control points in order along the line: the curve is the chord.
   for (const auto& xy : std::vector<std::vector<double>>{
@@ -305,6 +387,34 @@ TEST(Flatten, ControlPolygonFlatnessBoundsTheCurve) {
   // peaks at y = 30 (t = 1/2: (0 + 3*40 + 3*40 + 0) / 8).
   EXPECT_DOUBLE_EQ(control_polygon_flatness(curve), 40.0);
   EXPECT_NEAR(chord_deviation_bound(curve, 0.0, 1.0), 30.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace casteljau
+
+namespace casteljau {
+namespace {
+
+TEST(Flatten, HugeAndTinyCoordinatesGiveTheScaledFlattening) {
+  // Scaling by a power of two is exact: the flattening of 2^k C within 2^k e has
+  // the same parameters as C within e, and vertices exactly 2^k times as large,
+  // even where the bounds' squared terms would overflow (2^300 ~ 2e90) or
+  // underflow (2^-300) without the internal rescaling.
+  for (const Shape& shape : w6_shapes()) {
+    const BezierCurve curve = plane_curve(shape.points);
+    const auto reference = flatten(curve, Tolerance{0.01}).value();
+    for (int k : {300, -300}) {
+      std::vector<double> scaled_points = shape.points;
+      for (double& c : scaled_points) c = std::ldexp(c, k);
+      const auto line = flatten(plane_curve(scaled_points), Tolerance{std::ldexp(0.01, k)});
+      ASSERT_TRUE(line.has_value()) << shape.name << " k=" << k;
+      EXPECT_EQ(line->parameters, reference.parameters) << shape.name << " k=" << k;
+      for (std::size_t i = 0; i < line->points.coordinates().size(); ++i)
+        EXPECT_EQ(line->points.coordinates()[i], std::ldexp(reference.points.coordinates()[i], k));
+      EXPECT_EQ(flatten_segment_count(plane_curve(scaled_points), Tolerance{std::ldexp(0.01, k)}).value(),
+                static_cast<long>(reference.parameters.size()) - 1);
+    }
+  }
 }
 
 }  // namespace

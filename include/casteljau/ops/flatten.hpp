@@ -25,12 +25,14 @@ struct Polyline {
 /// tolerance.distance of the curve (Hausdorff distance <= tolerance).
 /// Each segment is certified by chord_deviation_bound (which cannot
 /// underestimate) against the tolerance minus a rounding allowance
-/// (tolerances::kFlattenRoundingAllowance); the segments are chosen greedily,
-/// each reaching as far as the bound allows (to within a few percent), which
-/// keeps the count close to the optimum. Any degree, dimension, rational
-/// curves, cusps, loops, zero-length curves. Cost: O(m) bound evaluations,
-/// about 2.5 per segment; O(1) each for plane polynomial curves of degree
-/// <= 3, O(n^2 d) otherwise.
+/// (tolerances::kFlattenRoundingAllowance), and the count stays close to the
+/// optimum (greedy furthest reach). Plane polynomial curves of degree <= 3:
+/// breakpoints proposed all at once to equalise the deviations (an additive
+/// measure, sqrt of the deviation), certified in SIMD batches, greedy steps
+/// only where a proposal fails or falls short (inflections, cusps); about 1-3
+/// O(1) bound evaluations per segment. Other curves: greedy furthest reach,
+/// about 2.5 O(n^2 d) bound evaluations per segment. Any degree, dimension,
+/// rational curves, cusps, loops, zero-length curves. See docs/flattening.md.
 /// Errors: tolerance not finite or <= 0; tolerance below what double precision
 /// can certify for this curve (kFlattenSmallestToleranceFactor x allowance);
 /// more than tolerances::kMaxFlattenSegments segments.
