@@ -48,6 +48,10 @@ for binary in "${binaries[@]}"; do
     status=1
     continue
   fi
+  if [[ ! -s "$json" ]]; then
+    echo "   (no row of $name matches the filter '$filter')"
+    continue
+  fi
   /usr/bin/python3 - "$json" <<'EOF' || status=1
 import json, sys
 from collections import OrderedDict
