@@ -1,10 +1,10 @@
 #include "casteljau/bezier/bezier_curve.hpp"
 
 #include "casteljau/core/tolerance.hpp"
+#include "../core/number_text.hpp"
 
 #include <cassert>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 namespace casteljau {
@@ -33,9 +33,8 @@ Expected<BezierCurve> BezierCurve::make(PointArray control_points, std::vector<d
     for (std::size_t i = 0; i < weights.size(); ++i) {
       if (auto ok = check_finite(weights[i], "weight " + std::to_string(i)); !ok) return ok.error();
       if (!(weights[i] > 0.0)) {
-        char value[32];
-        std::snprintf(value, sizeof value, "%.17g", weights[i]);
-        return Error{"weight " + std::to_string(i) + " is " + value + ", weights must be > 0"};
+        return Error{"weight " + std::to_string(i) + " is " + detail::number_text(weights[i]) +
+                     ", weights must be > 0"};
       }
     }
   }

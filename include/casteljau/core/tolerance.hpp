@@ -58,6 +58,39 @@ inline constexpr double kFlattenRoundingAllowance = 1e-13;
 /// subdividing down to rounding noise.
 inline constexpr double kFlattenSmallestToleranceFactor = 10.0;
 
+/// How far the two axes given for a circle, arc or ellipse (nurbs/conics.hpp)
+/// may be from orthonormal: | |X| - 1 |, | |Y| - 1 | and |X . Y| must each be
+/// at most this (dimensionless). Axes computed in double (a rotation matrix, a
+/// normalized cross product) are off by a few ulps (1e-16); 1e-12 accepts those
+/// and still refuses a forgotten normalization or a wrong axis. The accepted
+/// axes are then re-orthonormalized (Gram-Schmidt), so the conic is as exact
+/// as double allows whatever rounding the caller's axes carried.
+inline constexpr double kOrthonormalAxes = 1e-12;
+
+
+/// Largest gap allowed where two curves or Bézier pieces are joined end to
+/// start (join, from_bezier_pieces), relative to the larger of their scales
+/// (scale_of of the control points, at least 1e-300 so that curves at the
+/// origin compare absolutely). Pieces produced by casteljau (decomposition,
+/// splitting) meet to a few ulps, about 1e-15 relative; 1e-9 accepts data
+/// rounded to 9 significant digits (files, other programs) and refuses any
+/// visible gap. Unit: fraction of the scale.
+inline constexpr double kJointRelativeGap = 1e-9;
+
+/// Relative agreement under which the left and right k-th derivatives at a
+/// knot count as equal when measuring continuity (continuity_at_knots, join).
+/// Each side is computed by the basis derivatives of its own span, with a
+/// rounding error of about p^k ulps of the derivative scale
+/// s (p/h)^k (s the control points' scale, h the shorter adjacent span);
+/// 1e-9 of that scale is far above the noise for degrees up to 10 and far
+/// below a real jump. Unit: fraction of the derivative scale.
+inline constexpr double kContinuityRelative = 1e-9;
+
+/// Angle, in radians, under which the unit tangents on both sides of a knot
+/// count as the same direction (G^1). 1e-7 rad is about sqrt of the rounding
+/// of a normalized difference of two O(1) tangents (1e-14 relative): what
+/// a tangent computed to ~1e-14 can certify.
+inline constexpr double kTangentAngle = 1e-7;
 
 // --- Size limits for untrusted input -----------------------------------------
 // "Huge sizes" are refused with a clear error instead of exhausting memory or
@@ -68,6 +101,12 @@ inline constexpr double kFlattenSmallestToleranceFactor = 10.0;
 /// operations per point (tens of milliseconds), and no design needs more: long
 /// point sets are interpolated or split into pieces, not made one polynomial.
 inline constexpr int kMaxBezierDegree = 10'000;
+
+/// Highest degree of one B-spline or NURBS curve accepted from outside
+/// (BSplineCurve::make). The same bound as a Bézier curve's, so that every
+/// Bézier curve converts (to_bspline); evaluation is O(p^2) per point and the
+/// basis derivatives (basis_function_derivatives) take (p+1)^2 doubles.
+inline constexpr int kMaxBSplineDegree = kMaxBezierDegree;
 
 /// Most control points in one model (all pieces together), and most points
 /// in one CSV point set. 10^7 points in 3D are 240 MB as doubles and about

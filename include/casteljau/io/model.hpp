@@ -11,6 +11,7 @@
 
 #include "casteljau/bezier/bezier_curve.hpp"
 #include "casteljau/bezier/piecewise_bezier.hpp"
+#include "casteljau/core/interval.hpp"
 #include "casteljau/core/tolerance.hpp"
 
 namespace casteljau {
@@ -19,17 +20,6 @@ namespace casteljau {
 /// Every model kind of model JSON version 1 that this version implements.
 /// Later layers (B-splines, surfaces) add their types here.
 using Model = std::variant<BezierCurve, PiecewiseBezierCurve>;
-
-/// A closed parameter interval [lower, upper].
-struct Interval {
-  double lower = 0.0;
-  double upper = 1.0;
-  /// lower + f (upper - lower).
-  double lerp(double f) const { return lower + f * (upper - lower); }
-  /// lower <= u <= upper (false for NaN).
-  bool contains(double u) const { return lower <= u && u <= upper; }
-  friend bool operator==(const Interval&, const Interval&) = default;
-};
 
 /// The model's parameter domain: [0,1] for a Bézier curve, [0,m] for m pieces.
 Interval domain_of(const Model& model);

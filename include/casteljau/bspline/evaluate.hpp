@@ -1,0 +1,67 @@
+#pragma once
+// Points and derivatives of B-spline and NURBS curves.
+//
+// Parameters: the domain is [t_p, t_{n+1}] (BSplineCurve::domain()). Like the
+// Bézier functions, these accept any finite u and extrapolate outside the
+// domain (the first or last polynomial piece continued); front ends refuse
+// parameters outside the domain before calling them. At the end of the
+// domain the last non-empty span is used (find_span), so a clamped curve
+// interpolates its last control point exactly.
+
+#include <span>
+#include <vector>
+
+#include "casteljau/bspline/bspline_curve.hpp"
+
+namespace casteljau {
+
+/// C(u) by de Boor's algorithm: p rounds of convex combinations
+/// P^r_j = (1 - a) P^{r-1}_{j-1} + a P^{r-1}_j, a = (u - t_j)/(t_{j+p+1-r} - t_j)
+/// on the span of u (The NURBS Book §5.3, eq. 5.11; span by A2.1). NURBS curves
+/// run it on the homogeneous points and divide (A4.1). O(p^2 d); no heap up to
+/// degree tolerances::kMaxStackDegree. A clamped curve gives P_0 and P_n exactly
+/// at the ends of its domain.
+Point point_at(const BSplineCurve& curve, double u);
+
+/// C(u) as sum N_{i,p}(u) P_i from the basis functions (The NURBS Book A3.1,
+/// A4.1): the independent half of the differential pair with point_at.
+Point point_at_basis_sum(const BSplineCurve& curve, double u);
+
+/// The k-th derivative C^(k)(u), k >= 0 (The NURBS Book A3.2 for B-splines;
+/// A4.2 for NURBS: C^(k) = (A^(k) - sum_{j=1..k} C(k,j) w^(j) C^(k-j)) / w).
+/// Zero for k > p on a polynomial curve. At a knot, the derivative of the
+/// span to the right (the left one at the end of the domain).
+Point derivative_at(const BSplineCurve& curve, double u, int order);
+
+/// C(u), C'(u), ..., C^(max_order)(u) in one pass (same formulas as derivative_at).
+std::vector<Point> derivatives_at(const BSplineCurve& curve, double u, int max_order);
+
+/// Batch evaluation: out[i*d .. i*d+d) = C(us[i]) for every i, parameters in
+/// any order (sorted runs are fastest). Writes into the caller's storage and
+/// never allocates up to degree tolerances::kMaxStackDegree.
+/// Requires out.size() == us.size() * dimension().
+void points_at(const BSplineCurve& curve, std::span<const double> us, std::span<double> out);
+
+/// Batch points and first derivatives: points[i*d ..] = C(us[i]) and
+/// derivatives[i*d ..] = C'(us[i]). Requires both sizes us.size() * dimension().
+void points_and_derivatives_at(const BSplineCurve& curve, std::span<const double> us,
+                               std::span<double> points, std::span<double> derivatives);
+
+/// Batch k-th derivatives: out[i*d ..] = C^(k)(us[i]) (same values as derivative_at).
+void derivatives_at(const BSplineCurve& curve, std::span<const double> us, int order,
+                    std::span<double> out);
+
+/// De Boor's algorithm at u as data, for figures and the playground:
+/// level r = 0..p holds the p+1-r points P^r_j (level 0: the control points
+/// P_{span-p}..P_span of the span; level p: the single point C(u), projected
+/// for a NURBS curve). Levels are stored projected (Cartesian) points.
+struct DeBoorNet {
+  double parameter = 0.0;
+  int span = 0;
+  std::vector<PointArray> levels;
+};
+
+/// The de Boor net of the curve at u (The NURBS Book §5.3, fig. 5.11).
+DeBoorNet de_boor_net(const BSplineCurve& curve, double u);
+
+}  // namespace casteljau

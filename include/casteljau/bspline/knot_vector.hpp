@@ -1,0 +1,66 @@
+#pragma once
+// Knot vectors t_0 <= t_1 <= ... <= t_{n+p+1} of a B-spline of degree p with
+// n+1 control points: validation, the usual builders, multiplicities, and the
+// Rhino/openNURBS convention (n+p-1 knots, the two outermost dropped).
+//
+// Notation: the seeds count the order k = p + 1 (seed 001: N_{i,k} has degree
+// k-1); casteljau, like The NURBS Book, always counts the degree p.
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "casteljau/core/expected.hpp"
+#include "casteljau/core/interval.hpp"
+
+namespace casteljau {
+
+/// Checks the knots of a B-spline of degree p >= 0 with `control_point_count`
+/// = n+1 control points (The NURBS Book §2.2, §3.2): exactly n+p+2 knots, all
+/// finite, non-decreasing, no knot of multiplicity above p+1, and a non-empty
+/// domain t_p < t_{n+1}. Errors name the offending index: "knot 4 (0.5) is
+/// smaller than knot 3 (0.7), knots must be non-decreasing".
+Status validate_knots(std::span<const double> knots, int degree, std::size_t control_point_count);
+
+/// Clamped (open) knots with uniform interior spacing over `domain`: p+1
+/// copies of each end, n-p evenly spaced interior knots (The NURBS Book eq.
+/// 2.13; seed 001 "0…0, 1…1"). Requires n+1 >= p+1 control points.
+std::vector<double> clamped_uniform_knots(int degree, std::size_t control_point_count,
+                                          Interval domain = {});
+
+/// Uniform (cardinal) knots t_i = a + (i - p) h with the domain [t_p, t_{n+1}]
+/// equal to `domain` (seed 001: the uniform B-spline; not clamped, so the
+/// curve does not reach its end control points). Requires n+1 >= p+1.
+std::vector<double> uniform_knots(int degree, std::size_t control_point_count, Interval domain = {});
+
+/// Knots of a closed (periodic) uniform B-spline with `distinct_control_point_count`
+/// = m distinct control points: m + 2p + 1 uniform knots whose domain is
+/// `domain`; the curve's control points are P_0..P_{m-1} followed by
+/// P_0..P_{p-1} again (see make_periodic in bspline_curve.hpp).
+std::vector<double> periodic_knots(int degree, std::size_t distinct_control_point_count,
+                                   Interval domain = {});
+
+/// Converts the Rhino/openNURBS knot convention (n+p-1 knots: the first and
+/// last knots of the full vector are omitted) to the full vector of n+p+2
+/// knots by repeating the first and last knots once more, which is what
+/// openNURBS does (the dropped knots do not affect the curve on its domain).
+/// The result is validated. Errors as validate_knots, with indices of the
+/// given (Rhino) vector.
+Expected<std::vector<double>> knots_from_rhino(std::span<const double> rhino_knots, int degree,
+                                               std::size_t control_point_count);
+
+/// A distinct knot value and how many times it appears.
+struct KnotMultiplicity {
+  double value = 0.0;
+  int multiplicity = 0;
+  friend bool operator==(const KnotMultiplicity&, const KnotMultiplicity&) = default;
+};
+
+/// The distinct knot values in increasing order with their multiplicities
+/// (exact comparison: knots that differ by one ulp are distinct).
+std::vector<KnotMultiplicity> knot_multiplicities(std::span<const double> knots);
+
+/// How many knots are equal to u (0 if u is not a knot).
+int multiplicity_of(std::span<const double> knots, double u);
+
+}  // namespace casteljau
