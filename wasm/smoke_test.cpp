@@ -7,6 +7,8 @@
 #include "casteljau/bezier/degree.hpp"
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bezier/split.hpp"
+#include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/ops/flatten.hpp"
 
 namespace {
@@ -39,6 +41,25 @@ int main() {
   const auto line = flatten(curve, Tolerance{0.01});
   check(line && line->points.size() > 2, "flattening within 0.01");
   check(!BezierCurve::make(PointArray::make({{0, 0}, {1, 1}}).value(), {1, -1}).has_value(), "negative weight refused");
+  // B-splines: the Bézier curve as a clamped B-spline, a batch over a cubic
+  // with interior knots (the portable lanes of the batch kernel run here).
+  const BSplineCurve as_spline = to_bspline(curve);
+  check(point_at(as_spline, 0.5) == Point{2.25, 1.5}, "B-spline of the notebook polygon: C(0.5) = (2.25, 1.5)");
+  const auto cubic = BSplineCurve::make(3, clamped_uniform_knots(3, 6),
+                                        PointArray::make({{0, 0}, {1, 3}, {3, 4}, {5, 1}, {7, 3}, {9, 0}}).value());
+  check(cubic.has_value(), "cubic B-spline with clamped uniform knots");
+  std::vector<double> us(37), batch(74);
+  for (std::size_t i = 0; i < us.size(); ++i) us[i] = static_cast<double>(i) / 36.0;
+  points_at(*cubic, us, batch);
+  bool same = true;
+  for (std::size_t i = 0; i < us.size(); ++i) {
+    const Point q = point_at(*cubic, us[i]);
+    same = same && std::abs(q[0] - batch[2 * i]) <= 1e-14 && std::abs(q[1] - batch[2 * i + 1]) <= 1e-14;
+  }
+  check(same, "B-spline batch evaluation agrees with point_at");
+  check(point_at(*cubic, 1.0) == Point{9, 0}, "clamped B-spline ends at its last control point");
+  check(!BSplineCurve::make(1, {0, 0, 0.5, 0.4, 1}, PointArray::make({{0}, {1}, {2}}).value()).has_value(),
+        "decreasing knots refused");
   std::printf("%d failed\n", failures);
   return failures == 0 ? 0 : 1;
 }

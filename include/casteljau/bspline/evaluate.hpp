@@ -16,19 +16,24 @@
 namespace casteljau {
 
 /// C(u) by de Boor's algorithm: p rounds of convex combinations
-/// P^r_j = (1 - a) P^{r-1}_{j-1} + a P^{r-1}_j, a = (u - t_j)/(t_{j+p+1-r} - t_j)
-/// on the span of u (The NURBS Book §5.3, eq. 5.11; span by A2.1). NURBS curves
-/// run it on the homogeneous points and divide (A4.1). O(p^2 d); no heap up to
-/// degree tolerances::kMaxStackDegree. A clamped curve gives P_0 and P_n exactly
-/// at the ends of its domain.
+/// P^r_j = (1 - a) P^{r-1}_{j-1} + a P^{r-1}_j, a = (u - t_j) * (1/(t_{j+p+1-r} - t_j))
+/// on the span of u (The NURBS Book §5.3, eq. 5.11; span by A2.1). The
+/// reciprocal form rounds a at most one ulp away from the quotient and lets
+/// the batch kernels reuse it per span (src/bspline/de_boor.hpp); a = 1
+/// exactly at u = t_{j+p+1-r}, so a clamped curve gives P_0 and P_n exactly
+/// at the ends of its domain. NURBS curves run it on the homogeneous points
+/// and divide (A4.1). O(p^2 d); no heap up to degree tolerances::kMaxStackDegree.
 Point point_at(const BSplineCurve& curve, double u);
 
 /// C(u) as sum N_{i,p}(u) P_i from the basis functions (The NURBS Book A3.1,
 /// A4.1): the independent half of the differential pair with point_at.
 Point point_at_basis_sum(const BSplineCurve& curve, double u);
 
-/// The k-th derivative C^(k)(u), k >= 0 (The NURBS Book A3.2 for B-splines;
-/// A4.2 for NURBS: C^(k) = (A^(k) - sum_{j=1..k} C(k,j) w^(j) C^(k-j)) / w).
+/// The k-th derivative C^(k)(u), k >= 0. Order 1 comes from the same de Boor
+/// triangle as the point, C' = p (Q_1 - Q_0) / (t_{k+1} - t_k) from its last
+/// two rows (The NURBS Book §3.3), so it equals the batch kernels bit for bit;
+/// orders 2 and up from the basis derivatives (A3.2). NURBS: the homogeneous
+/// derivatives combined by C^(k) = (A^(k) - sum_{j=1..k} C(k,j) w^(j) C^(k-j)) / w (A4.2).
 /// Zero for k > p on a polynomial curve. At a knot, the derivative of the
 /// span to the right (the left one at the end of the domain).
 Point derivative_at(const BSplineCurve& curve, double u, int order);
@@ -47,7 +52,9 @@ void points_at(const BSplineCurve& curve, std::span<const double> us, std::span<
 void points_and_derivatives_at(const BSplineCurve& curve, std::span<const double> us,
                                std::span<double> points, std::span<double> derivatives);
 
-/// Batch k-th derivatives: out[i*d ..] = C^(k)(us[i]) (same values as derivative_at).
+/// Batch k-th derivatives: out[i*d ..] = C^(k)(us[i]), the same values as
+/// derivative_at (order 1 by the batch kernel, orders 0 and >= 2 by the
+/// scalar functions per parameter).
 void derivatives_at(const BSplineCurve& curve, std::span<const double> us, int order,
                     std::span<double> out);
 

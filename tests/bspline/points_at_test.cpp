@@ -1,0 +1,337 @@
+// Batch B-spline evaluation (src/bspline/points_at.cpp) against the scalar
+// functions: points_at equals point_at, points_and_derivatives_at and
+// derivatives_at(us, 1) equal point_at / derivative_at(u, 1), bit for bit,
+// for degrees 0..9, dimensions 1..4, rational or not, clamped or not, with
+// repeated interior knots, parameters sorted, shuffled and reversed, at
+// knots, at and beyond the domain's ends, any batch size and output offset.
+//
+// The scalar functions themselves are checked here against independent
+// formulas: the de Boor point against the basis-function sum (The NURBS
+// Book A3.1/A4.1) and the de Boor-triangle derivative against the sum of
+// basis-function derivatives (A3.2/A4.2), within a few units in the last
+// place of each sum's magnitude (sum of |terms|), which is what the
+// reciprocal arithmetic of de_boor.hpp may cost.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "casteljau/bspline/basis.hpp"
+#include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/bspline/knot_vector.hpp"
+
+namespace casteljau {
+namespace {
+
+/// splitmix64: a fixed, portable stream.
+struct Random {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  }
+  double unit() { return static_cast<double>(next() >> 11) * 0x1p-53; }
+  int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
+};
+
+bool same_bits(double a, double b) {
+  std::uint64_t x, y;
+  std::memcpy(&x, &a, sizeof x);
+  std::memcpy(&y, &b, sizeof y);
+  return x == y;
+}
+
+/// A random curve: degree p, dimension d, 1..12 more control points than
+/// p+1, coordinates in [-100, 100), weights in [0.1, 10); knots clamped or
+/// not on a random interval, with interior knots repeated up to p times.
+BSplineCurve random_curve(Random& random, int p, int d, bool rational, bool clamped) {
+  for (;;) {
+    const int count = p + 1 + 1 + random.below(12);
+    const int knot_count = count + p + 1;
+    const double lower = -3.0 + 6.0 * random.unit();
+    const double width = 0.5 + 4.0 * random.unit();
+    std::vector<double> knots(static_cast<std::size_t>(knot_count));
+    for (double& t : knots) t = lower + width * random.unit();
+    std::sort(knots.begin(), knots.end());
+    // Repeat some interior knots (multiplicity up to p).
+    for (int i = 1; i < knot_count; ++i) {
+      int multiplicity = 1;
+      while (multiplicity < i && knots[static_cast<std::size_t>(i - multiplicity)] == knots[static_cast<std::size_t>(i)])
+        ++multiplicity;
+      if (p > 0 && multiplicity < p && random.below(4) == 0) knots[static_cast<std::size_t>(i)] = knots[static_cast<std::size_t>(i - 1)];
+    }
+    if (clamped) {
+      for (int i = 0; i <= p; ++i) {
+        knots[static_cast<std::size_t>(i)] = knots[static_cast<std::size_t>(p)];
+        knots[static_cast<std::size_t>(knot_count - 1 - i)] = knots[static_cast<std::size_t>(count)];
+      }
+    }
+    std::vector<double> coordinates(static_cast<std::size_t>(count * d));
+    for (double& x : coordinates) x = -100.0 + 200.0 * random.unit();
+    std::vector<double> weights;
+    if (rational)
+      for (int i = 0; i < count; ++i) weights.push_back(0.1 + 9.9 * random.unit());
+    auto points = PointArray::make(d, coordinates);
+    if (!points) continue;
+    auto curve = BSplineCurve::make(p, knots, *points, weights);
+    if (curve) return *curve;  // else (empty domain, multiplicity) draw again
+  }
+}
+
+/// Parameters that exercise every path: the knots themselves (inside and
+/// outside the domain), the ends, neighbours of knots, random points,
+/// points outside the domain, and a dense sorted run.
+std::vector<double> parameters_for(Random& random, const BSplineCurve& curve) {
+  const Interval domain = curve.domain();
+  const double width = domain.upper - domain.lower;
+  std::vector<double> us;
+  for (double t : curve.knots()) {
+    us.push_back(t);
+    us.push_back(std::nextafter(t, -INFINITY));
+    us.push_back(std::nextafter(t, INFINITY));
+  }
+  us.push_back(domain.lower);
+  us.push_back(domain.upper);
+  for (int i = 0; i < 40; ++i) us.push_back(domain.lower + width * random.unit());
+  for (int i = 0; i < 6; ++i) us.push_back(domain.lower - 0.3 * width * random.unit());
+  for (int i = 0; i < 6; ++i) us.push_back(domain.upper + 0.3 * width * random.unit());
+  return us;
+}
+
+/// Checks every batch function against the scalar ones on `us`, with the
+/// outputs at an offset of `shift` doubles (alignment).
+void expect_batch_equals_scalar(const BSplineCurve& curve, const std::vector<double>& us, std::size_t shift = 0) {
+  const std::size_t d = static_cast<std::size_t>(curve.dimension());
+  const std::size_t size = us.size() * d;
+  std::vector<double> points(size + shift, NAN), points2(size + shift, NAN), first(size + shift, NAN),
+      first2(size + shift, NAN);
+  const std::span<double> p(points.data() + shift, size), p2(points2.data() + shift, size),
+      f(first.data() + shift, size), f2(first2.data() + shift, size);
+  points_at(curve, us, p);
+  points_and_derivatives_at(curve, us, p2, f);
+  derivatives_at(curve, us, 1, f2);
+  int failures = 0;
+  for (std::size_t i = 0; i < us.size() && failures < 5; ++i) {
+    const Point expected = point_at(curve, us[i]);
+    const Point expected_derivative = derivative_at(curve, us[i], 1);
+    for (std::size_t c = 0; c < d; ++c) {
+      const bool ok = same_bits(p[i * d + c], expected[c]) && same_bits(p2[i * d + c], expected[c]) &&
+                      same_bits(f[i * d + c], expected_derivative[c]) &&
+                      same_bits(f2[i * d + c], expected_derivative[c]);
+      if (!ok) {
+        ++failures;
+        ADD_FAILURE() << "degree " << curve.degree() << " dimension " << d << (curve.is_rational() ? " rational" : "")
+                      << " u = " << us[i] << " (index " << i << " of " << us.size() << ") coordinate " << c
+                      << ": points_at " << p[i * d + c] << ", points_and_derivatives_at " << p2[i * d + c]
+                      << ", point_at " << expected[c] << "; derivative " << f[i * d + c] << " / " << f2[i * d + c]
+                      << ", derivative_at " << expected_derivative[c];
+        break;
+      }
+    }
+  }
+}
+
+TEST(BSplinePointsAt, EqualsPointAtBitForBit) {
+  Random random{20261122u};
+  for (int p = 0; p <= 9; ++p) {
+    for (int d = 1; d <= 4; ++d) {
+      for (int rational = 0; rational <= 1; ++rational) {
+        for (int clamped = 0; clamped <= 1; ++clamped) {
+          const BSplineCurve curve = random_curve(random, p, d, rational == 1, clamped == 1);
+          std::vector<double> us = parameters_for(random, curve);
+          // Shuffled (as drawn, then a random permutation), sorted, reversed.
+          for (std::size_t i = us.size(); i > 1; --i) std::swap(us[i - 1], us[static_cast<std::size_t>(random.below(static_cast<int>(i)))]);
+          expect_batch_equals_scalar(curve, us);
+          std::sort(us.begin(), us.end());
+          expect_batch_equals_scalar(curve, us);
+          std::reverse(us.begin(), us.end());
+          expect_batch_equals_scalar(curve, us);
+          // A dense sorted run: many parameters per span (the broadcast path).
+          std::vector<double> dense(300);
+          const Interval domain = curve.domain();
+          for (std::size_t i = 0; i < dense.size(); ++i)
+            dense[i] = domain.lerp(static_cast<double>(i) / static_cast<double>(dense.size() - 1));
+          expect_batch_equals_scalar(curve, dense);
+        }
+      }
+    }
+  }
+}
+
+TEST(BSplinePointsAt, AnyBatchSizeAndOutputOffset) {
+  Random random{77u};
+  for (int p : {1, 2, 3, 5, 8}) {
+    for (int d : {1, 2, 3, 4}) {
+      for (int rational = 0; rational <= 1; ++rational) {
+        const BSplineCurve curve = random_curve(random, p, d, rational == 1, true);
+        const std::vector<double> all = parameters_for(random, curve);
+        for (std::size_t size = 0; size <= 20; ++size) {
+          const std::vector<double> us(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(size));
+          for (std::size_t shift : {0u, 1u, 3u}) expect_batch_equals_scalar(curve, us, shift);
+        }
+      }
+    }
+  }
+}
+
+/// A clamped polynomial curve gives its end control points exactly; a NURBS
+/// curve gives (w P) / w, which rounds twice: within one ulp of P.
+void expect_end(double value, double control, bool rational, int p, std::size_t i) {
+  if (rational) {
+    EXPECT_NEAR(value, control, 0x1p-52 * std::abs(control)) << "p " << p << " i " << i;
+  } else {
+    EXPECT_EQ(value, control) << "p " << p << " i " << i;
+  }
+}
+
+TEST(BSplinePointsAt, ClampedCurvesGiveTheirEndPointsExactly) {
+  Random random{5u};
+  for (int p = 1; p <= 9; ++p) {
+    for (int rational = 0; rational <= 1; ++rational) {
+      const BSplineCurve curve = random_curve(random, p, 3, rational == 1, true);
+      const Interval domain = curve.domain();
+      // Ends inside blocks of every position, sorted and not.
+      const std::vector<double> us{domain.lower, domain.upper, domain.lerp(0.5), domain.upper, domain.lower,
+                                   domain.lerp(0.25), domain.upper, domain.upper, domain.lower};
+      std::vector<double> out(us.size() * 3), first(us.size() * 3);
+      points_at(curve, us, out);
+      const auto& control = curve.control_points();
+      const std::size_t last = control.size() - 1;
+      for (std::size_t i = 0; i < us.size(); ++i) {
+        const std::span<const double> expected = us[i] == domain.lower ? control[0] : control[last];
+        if (us[i] != domain.lower && us[i] != domain.upper) continue;
+        for (std::size_t c = 0; c < 3; ++c) expect_end(out[i * 3 + c], expected[c], rational == 1, p, i);
+      }
+      points_and_derivatives_at(curve, us, out, first);
+      for (std::size_t i = 0; i < us.size(); ++i) {
+        const std::span<const double> expected = us[i] == domain.lower ? control[0] : control[last];
+        if (us[i] != domain.lower && us[i] != domain.upper) continue;
+        for (std::size_t c = 0; c < 3; ++c) expect_end(out[i * 3 + c], expected[c], rational == 1, p, i);
+      }
+    }
+  }
+}
+
+TEST(BSplinePointsAt, LargeSortedAndRandomBatches) {
+  // Over 4 MiB of output: the streaming-store path, sorted and random.
+  Random random{99u};
+  for (int rational = 0; rational <= 1; ++rational) {
+    const std::size_t count = 1000;
+    std::vector<double> coordinates(count * 3);
+    for (double& x : coordinates) x = 100.0 * random.unit();
+    std::vector<double> weights;
+    if (rational)
+      for (std::size_t i = 0; i < count; ++i) weights.push_back(0.5 + random.unit());
+    const BSplineCurve curve = *BSplineCurve::make(3, clamped_uniform_knots(3, count),
+                                                   *PointArray::make(3, coordinates), weights);
+    std::vector<double> us(180'001);
+    for (std::size_t i = 0; i < us.size(); ++i) us[i] = static_cast<double>(i) / static_cast<double>(us.size() - 1);
+    for (int pass = 0; pass < 2; ++pass) {
+      if (pass == 1)
+        for (std::size_t i = us.size(); i > 1; --i) std::swap(us[i - 1], us[random.next() % i]);
+      std::vector<double> out(us.size() * 3 + 1), first(us.size() * 3 + 1);
+      for (std::size_t shift : {0u, 1u}) {
+        const std::span<double> o(out.data() + shift, us.size() * 3), f(first.data() + shift, us.size() * 3);
+        points_and_derivatives_at(curve, us, o, f);
+        std::size_t mismatches = 0;
+        for (std::size_t i = 0; i < us.size(); i += 7) {
+          const Point expected = point_at(curve, us[i]);
+          const Point expected_derivative = derivative_at(curve, us[i], 1);
+          for (std::size_t c = 0; c < 3; ++c)
+            mismatches += !same_bits(o[i * 3 + c], expected[c]) || !same_bits(f[i * 3 + c], expected_derivative[c]);
+        }
+        EXPECT_EQ(mismatches, 0u) << "pass " << pass << " shift " << shift;
+      }
+    }
+  }
+}
+
+TEST(BSplinePointsAt, KnotsCloserThanTheReciprocalRange) {
+  // Knot differences below 2^-1024 have no finite reciprocal: the scalar code
+  // divides there, and the batch must give the same finite values.
+  const std::vector<double> knots{0, 0, 0, 0, 1e-310, 2e-310, 1, 1, 1, 1};
+  const BSplineCurve curve = *BSplineCurve::make(
+      3, knots, *PointArray::make(2, {0, 0, 1, 2, 3, 1, 4, 4, 6, 0, 7, 3}));
+  std::vector<double> us{0.0, 5e-311, 1e-310, 1.5e-310, 2e-310, 0.5, 1.0, 0.0, 3e-311, 1.2e-310, 1.7e-310};
+  for (double u : us) {
+    for (double c : point_at(curve, u)) EXPECT_TRUE(std::isfinite(c)) << u;
+  }
+  expect_batch_equals_scalar(curve, us);
+  std::sort(us.begin(), us.end());
+  expect_batch_equals_scalar(curve, us);
+}
+
+// --- the scalar arithmetic against independent formulas ----------------------
+
+/// sum |N_j| |R_j| and sum N_j R_j over the rows R_j (homogeneous if rational)
+/// for derivative order k (0: the point), from The NURBS Book A2.3.
+struct BasisSum {
+  std::vector<double> value, magnitude;  // width entries each
+};
+BasisSum basis_sum(const BSplineCurve& curve, double u, int k) {
+  const int p = curve.degree(), d = curve.dimension();
+  const int width = curve.is_rational() ? d + 1 : d;
+  const int span = find_span(curve.knots(), p, u);
+  std::vector<double> ders(static_cast<std::size_t>((k + 1) * (p + 1)));
+  basis_function_derivatives(curve.knots(), p, span, u, k, ders);
+  BasisSum s{std::vector<double>(static_cast<std::size_t>(width)), std::vector<double>(static_cast<std::size_t>(width))};
+  for (int j = 0; j <= p; ++j) {
+    const std::size_t i = static_cast<std::size_t>(span - p + j);
+    const double n = ders[static_cast<std::size_t>(k * (p + 1) + j)];
+    const double w = curve.is_rational() ? curve.weights()[i] : 1.0;
+    for (int c = 0; c < width; ++c) {
+      const double r = c < d ? w * curve.control_points()[i][static_cast<std::size_t>(c)] : w;
+      s.value[static_cast<std::size_t>(c)] += n * r;
+      s.magnitude[static_cast<std::size_t>(c)] += std::abs(n) * std::abs(r);
+    }
+  }
+  return s;
+}
+
+TEST(BSplinePointsAt, ScalarArithmeticAgreesWithTheBasisFunctionSums) {
+  // Point: |C - sum N_j P_j| <= 16 eps * sum |N_j||P_j| (each side rounds
+  // O(p) times; 16 ulps is far below any wrong answer). Derivative: the same
+  // bound on A' against sum N'_j P_j, and for NURBS on C' = (A' - w' C)/w.
+  constexpr double kEps = 0x1p-52;
+  Random random{31337u};
+  for (int p = 0; p <= 9; ++p) {
+    for (int d = 1; d <= 3; ++d) {
+      for (int rational = 0; rational <= 1; ++rational) {
+        const BSplineCurve curve = random_curve(random, p, d, rational == 1, random.below(2) == 0);
+        const Interval domain = curve.domain();
+        for (int i = 0; i <= 50; ++i) {
+          const double u = domain.lerp(i / 50.0);
+          const BasisSum a = basis_sum(curve, u, 0);
+          const BasisSum a1 = basis_sum(curve, u, std::min(1, p));
+          const Point point = point_at(curve, u);
+          const Point derivative = derivative_at(curve, u, 1);
+          const double w = rational ? a.value[static_cast<std::size_t>(d)] : 1.0;
+          const double w1 = rational && p > 0 ? a1.value[static_cast<std::size_t>(d)] : 0.0;
+          for (int c = 0; c < d; ++c) {
+            const std::size_t k = static_cast<std::size_t>(c);
+            const double expected = a.value[k] / w;
+            const double bound = 16 * p * kEps * (a.magnitude[k] + (rational ? a.magnitude[static_cast<std::size_t>(d)] * std::abs(expected) : 0.0)) / w + 1e-300;
+            EXPECT_NEAR(point[k], expected, bound + 4 * kEps * std::abs(expected)) << "p " << p << " u " << u;
+            if (p == 0) {
+              EXPECT_EQ(derivative[k], 0.0);
+              continue;
+            }
+            const double slope = (a1.value[k] - w1 * expected) / w;
+            const double slope_bound =
+                16 * p * kEps * (a1.magnitude[k] + std::abs(w1) * std::abs(expected) +
+                                 (rational ? a1.magnitude[static_cast<std::size_t>(d)] * std::abs(expected) : 0.0)) / w;
+            EXPECT_NEAR(derivative[k], slope, slope_bound + 4 * kEps * std::abs(slope)) << "p " << p << " u " << u;
+          }
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace casteljau
