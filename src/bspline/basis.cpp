@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cstddef>
+#include <vector>
 
 #include "../core/workspace.hpp"
 
@@ -129,15 +130,43 @@ void basis_function_derivatives(std::span<const double> knots, int degree, int s
 }
 
 double basis_function(std::span<const double> knots, int degree, int index, double u) {
-  const int n = static_cast<int>(knots.size()) - degree - 2;
+  const int p = degree;
+  const int n = static_cast<int>(knots.size()) - p - 2;
   assert(index >= 0 && index <= n);
-  (void)n;
-  const int span = find_span(knots, degree, u);
-  if (index < span - degree || index > span) return 0.0;
-  detail::Workspace<512> workspace;
-  const std::span<double> values = workspace.take(static_cast<std::size_t>(degree) + 1);
-  basis_functions(knots, degree, span, u, values);
-  return values[static_cast<std::size_t>(index - span + degree)];
+  const std::size_t i = static_cast<std::size_t>(index);
+  // N_{i,p} is supported on [t_i, t_{i+p+1}] (The NURBS Book P2.1).
+  if (!(u >= knots[i] && u <= knots[i + static_cast<std::size_t>(p) + 1])) return 0.0;
+  // Degree 0, half-open, except at the end of the domain t_{n+1}, which
+  // belongs to the last non-empty span (the convention of find_span).
+  int last_span = n;
+  while (knots[static_cast<std::size_t>(last_span)] == knots[static_cast<std::size_t>(last_span) + 1]) --last_span;
+  const bool at_end = u == knots[static_cast<std::size_t>(last_span) + 1];
+  std::vector<double> values(static_cast<std::size_t>(p) + 1);  // for figures and tests: one allocation is fine
+  for (int j = 0; j <= p; ++j) {
+    const std::size_t k = i + static_cast<std::size_t>(j);
+    const bool on = at_end ? static_cast<int>(k) == last_span : (knots[k] <= u && u < knots[k + 1]);
+    values[static_cast<std::size_t>(j)] = on ? 1.0 : 0.0;
+  }
+  // The triangle of A2.4: raise the degree one step at a time, skipping the
+  // 0/0 terms of repeated knots (their functions are zero).
+  for (int k = 1; k <= p; ++k) {
+    const double first_width = knots[i + static_cast<std::size_t>(k)] - knots[i];
+    double saved = values[0] == 0.0 ? 0.0 : (u - knots[i]) * values[0] / first_width;
+    for (int j = 0; j <= p - k; ++j) {
+      const double left = knots[i + static_cast<std::size_t>(j) + 1];
+      const double right = knots[i + static_cast<std::size_t>(j + k) + 1];
+      const double next = values[static_cast<std::size_t>(j) + 1];
+      if (next == 0.0) {
+        values[static_cast<std::size_t>(j)] = saved;
+        saved = 0.0;
+      } else {
+        const double temp = next / (right - left);
+        values[static_cast<std::size_t>(j)] = saved + (right - u) * temp;
+        saved = (u - left) * temp;
+      }
+    }
+  }
+  return values[0];
 }
 
 }  // namespace casteljau

@@ -77,11 +77,27 @@ TEST(BasisFunctions, EqualTheExactRecursion) {
           const mpq_class exact = exact_basis(knots, i, p, u);
           EXPECT_LE(std::abs(computed - exact.get_d()), 8e-16)
               << "p=" << p << " i=" << i << " u=" << u;
-          EXPECT_EQ(basis_function(knots, p, i, u), computed);
+          EXPECT_LE(std::abs(basis_function(knots, p, i, u) - exact.get_d()), 8e-16);
         }
       }
     }
   }
+}
+
+TEST(BasisFunction, FollowsTheDefinitionOutsideTheDomainToo) {
+  // Uniform degree-2 knots: the domain is [2, 5], the functions live on [0, 7].
+  const std::vector<double> knots{0, 1, 2, 3, 4, 5, 6, 7};
+  for (int k = 0; k <= 70; ++k) {
+    const double u = k / 10.0;
+    for (int i = 0; i <= 4; ++i) {
+      const double exact = exact_basis(knots, i, 2, u).get_d();
+      EXPECT_LE(std::abs(basis_function(knots, 2, i, u) - exact), 8e-16) << "i=" << i << " u=" << u;
+    }
+  }
+  // N_{0,1} on 0 1 2 ...: the hat u on [0, 1] (0.06, not an extrapolated piece).
+  EXPECT_NEAR(basis_function(std::vector<double>{0, 1, 2, 3, 4}, 1, 0, 0.06), 0.06, 1e-16);
+  EXPECT_EQ(basis_function(knots, 2, 0, -1.0), 0.0);
+  EXPECT_EQ(basis_function(knots, 2, 4, 7.5), 0.0);
 }
 
 TEST(BasisFunctionDerivatives, EqualExactDerivativesOfThePieces) {

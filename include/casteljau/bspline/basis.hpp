@@ -38,9 +38,13 @@ void basis_functions(std::span<const double> knots, int degree, int span, double
 void basis_function_derivatives(std::span<const double> knots, int degree, int span, double u,
                                 int order, std::span<double> out);
 
-/// One basis function N_{i,p}(u), 0 <= i <= n, with the end of the domain
-/// closed as in find_span (The NURBS Book A2.4). For figures and tests; use
-/// basis_functions for evaluation.
+/// One basis function N_{i,p}(u), 0 <= i <= n, by its own triangle (The
+/// NURBS Book A2.4), for every u: the Cox–de Boor definition over the whole
+/// knot range (zero outside [t_i, t_{i+p+1}]), with the end of the domain
+/// closed as in find_span. Unlike the evaluation functions it does not
+/// extrapolate outside the domain, so figures of the basis over all knots
+/// are right. O(p^2); the independent half of a differential pair with
+/// basis_functions.
 double basis_function(std::span<const double> knots, int degree, int index, double u);
 
 }  // namespace casteljau

@@ -17,7 +17,9 @@ namespace casteljau {
 /// [breakpoints[i], breakpoints[i+1]] and is evaluated there at the local
 /// parameter (u - breakpoints[i]) / (breakpoints[i+1] - breakpoints[i]).
 struct BezierPieces {
+  /// b_0 < b_1 < ... < b_m, one more than the pieces.
   std::vector<double> breakpoints;
+  /// The m pieces, each on [0,1] in its own parameter.
   std::vector<BezierCurve> pieces;
   friend bool operator==(const BezierPieces&, const BezierPieces&) = default;
 };
