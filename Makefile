@@ -61,12 +61,14 @@ wasm: deps
 
 test: build asan wasm
 	@echo "== C++ tests (build/) =="
-	cd build && ctest --output-on-failure -j $(JOBS)
+	cd build && ctest --output-on-failure -j $(JOBS) -LE python
+	@echo "== Python tests (pytest with $(PYTHON): cross-checks against scipy through build/casteljau) =="
+	CASTELJAU_CLI=$(CURDIR)/build/casteljau $(PYTHON) -m pytest -q -p no:cacheprovider tests/python
 	@echo "== C++ tests under AddressSanitizer + UBSan (build-asan/) =="
-	cd build-asan && ctest --output-on-failure -j $(JOBS)
+	cd build-asan && ctest --output-on-failure -j $(JOBS) -LE python
 	@echo "== core library built with em++, run under node (build-wasm/) =="
 	cd build-wasm && ctest --output-on-failure
-	@echo "make test: all test suites passed (C++, sanitizers, em++ core)"
+	@echo "make test: all test suites passed (C++, pytest, sanitizers, em++ core)"
 
 demo: build
 	rm -rf out/gallery.tmp && ./build/casteljau gallery out/gallery.tmp

@@ -15,6 +15,7 @@ void add_eval_command(CLI::App& app, int& status);       // cli/eval_command.cpp
 void add_plot_command(CLI::App& app, int& status);       // cli/plot_command.cpp
 void add_bernstein_command(CLI::App& app, int& status);  // cli/bernstein_command.cpp
 void add_gallery_command(CLI::App& app, int& status);    // cli/gallery_command.cpp
+void add_convert_command(CLI::App& app, int& status);    // cli/convert_command.cpp
 
 /// Prints "casteljau: error: <message>" on stderr and returns 2 (bad input).
 int fail(std::string_view message);

@@ -187,7 +187,8 @@ void add_eval_command(CLI::App& app, int& status) {
       "eval",
       "Points (or K-th derivatives) of the curves in MODEL at the given parameters, as CSV: one point per line, "
       "coordinates separated by ',', each the shortest text that reads back to the same double. Parameters must lie "
-      "in the model's domain ([0,1] for bezier, [0,m] for piecewise_bezier with m pieces). For several models, each "
+      "in the model's domain ([0,1] for bezier, [0,m] for piecewise_bezier with m pieces, [t_p, t_{n+1}] for a "
+      "bspline of degree p with n+1 control points). For several models, each "
       "is evaluated in order at the same parameters and the lines follow one another.");
   eval->add_option("MODEL", options->model,
                    "Model JSON, or a CSV point set taken as the control polygon of one Bézier curve (by extension "

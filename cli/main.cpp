@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   add_plot_command(app, status);
   add_bernstein_command(app, status);
   add_gallery_command(app, status);
+  add_convert_command(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -3,6 +3,7 @@
 #include <cassert>
 
 #include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/bspline/evaluate.hpp"
 
 namespace casteljau {
 namespace {
@@ -23,7 +24,8 @@ Interval domain_of(const Model& model) {
                                },
                                [](const PiecewiseBezierCurve& c) {
                                  return Interval{0.0, static_cast<double>(c.size())};
-                               }},
+                               },
+                               [](const BSplineCurve& c) { return c.domain(); }},
                     model);
 }
 
@@ -37,7 +39,8 @@ std::size_t control_point_count(const Model& model) {
                                  std::size_t count = 0;
                                  for (const auto& piece : c.pieces()) count += piece.control_points().size();
                                  return count;
-                               }},
+                               },
+                               [](const BSplineCurve& c) { return c.control_points().size(); }},
                     model);
 }
 
@@ -53,7 +56,8 @@ Point derivative_at(const Model& model, double u, int order) {
 
 const char* type_name(const Model& model) {
   return std::visit(Overloaded{[](const BezierCurve&) { return "bezier"; },
-                               [](const PiecewiseBezierCurve&) { return "piecewise_bezier"; }},
+                               [](const PiecewiseBezierCurve&) { return "piecewise_bezier"; },
+                               [](const BSplineCurve&) { return "bspline"; }},
                     model);
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
 #include "text.hpp"
@@ -255,7 +256,7 @@ class Checker {
 
   Expected<Model> model(const json& value, const std::string& path) {
     if (!value.is_object()) return at(path, "expected a model object, found " + describe(value));
-    if (!value.contains("type")) return at(path, "missing field 'type' (bezier, piecewise_bezier)");
+    if (!value.contains("type")) return at(path, "missing field 'type' (bezier, piecewise_bezier, bspline)");
     const json& type = value["type"];
     if (!type.is_string()) return at(member(path, "type"), "expected a string, found " + describe(type));
     const auto& name = type.get_ref<const std::string&>();
@@ -266,10 +267,11 @@ class Checker {
       return Model{std::move(*curve)};
     }
     if (name == "piecewise_bezier") return piecewise(value, path);
-    if (name == "bspline" || name == "bezier_surface" || name == "bspline_surface" || name == "coons") {
+    if (name == "bspline") return bspline(value, path);
+    if (name == "bezier_surface" || name == "bspline_surface" || name == "coons") {
       return at(member(path, "type"), "the model type " + in_quotes(name) +
                                           " is not supported by this version of casteljau (supported: bezier, "
-                                          "piecewise_bezier)");
+                                          "piecewise_bezier, bspline)");
     }
     return at(member(path, "type"), "unknown model type " + in_quotes(name) +
                                         " (model JSON version 1 has bezier, piecewise_bezier, bspline, "
@@ -283,28 +285,101 @@ class Checker {
     const std::string points_path = member(path, "control_points");
     auto points = this->points(value["control_points"], points_path);
     if (!points) return points.error();
-    std::vector<double> weights;
-    if (value.contains("weights")) {
-      const std::string weights_path = member(path, "weights");
-      const json& list = value["weights"];
-      if (!list.is_array()) return at(weights_path, "expected an array of numbers, found " + describe(list));
-      if (list.size() != points->size()) {
-        return at(weights_path,
-                  fmt::format("{} weight{} for {} control point{}, expected one weight per control point", list.size(),
-                              list.size() == 1 ? "" : "s", points->size(), points->size() == 1 ? "" : "s"));
-      }
-      weights.reserve(list.size());
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        auto w = number(list[i], element(weights_path, i));
-        if (!w) return w.error();
-        if (!(*w > 0.0))
-          return at(element(weights_path, i), fmt::format("the weight {} is not > 0, weights must be positive", *w));
-        weights.push_back(*w);
-      }
-    }
-    auto curve = BezierCurve::make(std::move(*points), std::move(weights));
+    auto weights = this->weights(value, path, points->size());
+    if (!weights) return weights.error();
+    auto curve = BezierCurve::make(std::move(*points), std::move(*weights));
     if (!curve) return at(path, curve.error().message);  // checked above; kept as a safety net
     return curve;
+  }
+
+  /// The optional `weights` of a model with `count` control points: one
+  /// finite number > 0 each (empty when the field is absent: polynomial).
+  Expected<std::vector<double>> weights(const json& value, const std::string& path, std::size_t count) const {
+    std::vector<double> weights;
+    if (!value.contains("weights")) return weights;
+    const std::string weights_path = member(path, "weights");
+    const json& list = value["weights"];
+    if (!list.is_array()) return at(weights_path, "expected an array of numbers, found " + describe(list));
+    if (list.size() != count) {
+      return at(weights_path, fmt::format("{} weight{} for {} control point{}, expected one weight per control point",
+                                          list.size(), list.size() == 1 ? "" : "s", count, count == 1 ? "" : "s"));
+    }
+    weights.reserve(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      auto w = number(list[i], element(weights_path, i));
+      if (!w) return w.error();
+      if (!(*w > 0.0))
+        return at(element(weights_path, i), fmt::format("the weight {} is not > 0, weights must be positive", *w));
+      weights.push_back(*w);
+    }
+    return weights;
+  }
+
+  /// A B-spline or NURBS curve: degree, knots (full, or the Rhino/openNURBS
+  /// convention with two knots fewer), control points, optional weights.
+  Expected<Model> bspline(const json& value, const std::string& path) {
+    if (auto ok = known_fields(value, path, {"type", "degree", "knots", "control_points", "weights"},
+                               "a bspline model");
+        !ok) {
+      return ok.error();
+    }
+    for (const char* field : {"degree", "knots", "control_points"}) {
+      if (!value.contains(field)) return at(path, fmt::format("missing field '{}'", field));
+    }
+    // degree: a whole number in [0, kMaxBSplineDegree] (3 and 3.0 alike).
+    const std::string degree_path = member(path, "degree");
+    const json& degree_value = value["degree"];
+    if (!degree_value.is_number()) return at(degree_path, "expected a whole number, found " + describe(degree_value));
+    const double degree_number = degree_value.get<double>();
+    if (!(degree_number >= 0.0 && degree_number <= tolerances::kMaxBSplineDegree) ||
+        degree_number != std::floor(degree_number)) {
+      return at(degree_path, fmt::format("the degree {} is not a whole number in [0, {}]", degree_number,
+                                         tolerances::kMaxBSplineDegree));
+    }
+    const int degree = static_cast<int>(degree_number);
+
+    const std::string points_path = member(path, "control_points");
+    const json& point_list = value["control_points"];
+    const auto needed = static_cast<std::size_t>(degree) + 1;
+    if (point_list.is_array() && point_list.size() < needed) {
+      return at(points_path, fmt::format("{} control point{}, a B-spline of degree {} needs at least {}",
+                                         point_list.size(), point_list.size() == 1 ? "" : "s", degree, needed));
+    }
+    auto points = this->points(point_list, points_path);
+    if (!points) return points.error();
+    const std::size_t count = points->size();
+
+    const std::string knots_path = member(path, "knots");
+    const json& knot_list = value["knots"];
+    if (!knot_list.is_array()) return at(knots_path, "expected an array of numbers, found " + describe(knot_list));
+    const std::size_t full = count + needed;     // n + p + 2
+    const std::size_t rhino = count + static_cast<std::size_t>(degree) - 1;  // n + p, openNURBS
+    if (knot_list.size() != full && knot_list.size() != rhino) {
+      return at(knots_path, fmt::format("{} knot{} for {} control points of degree {}, expected {} (control points "
+                                        "+ degree + 1), or {} in the Rhino/openNURBS convention (control points + "
+                                        "degree - 1)",
+                                        knot_list.size(), knot_list.size() == 1 ? "" : "s", count, degree, full, rhino));
+    }
+    std::vector<double> knots;
+    knots.reserve(knot_list.size());
+    for (std::size_t i = 0; i < knot_list.size(); ++i) {
+      auto knot = number(knot_list[i], element(knots_path, i));
+      if (!knot) return knot.error();
+      knots.push_back(*knot);
+    }
+    if (knots.size() == full) {
+      if (auto ok = validate_knots(knots, degree, count); !ok) return at(knots_path, ok.error().message);
+    } else {
+      auto converted = knots_from_rhino(knots, degree, count);
+      if (!converted) return at(knots_path, converted.error().message + " (read in the Rhino/openNURBS convention)");
+      knots = std::move(*converted);
+    }
+
+    auto weights = this->weights(value, path, count);
+    if (!weights) return weights.error();
+    auto curve = BSplineCurve::make(degree, std::move(knots), std::move(*points), std::move(*weights));
+    if (!curve) return at(path, curve.error().message);  // checked above; kept as a safety net
+    return Model{std::move(*curve)};
   }
 
   Expected<Model> piecewise(const json& value, const std::string& path) {
@@ -439,9 +514,35 @@ void write_bezier(fmt::memory_buffer& out, const BezierCurve& curve) {
   out.push_back('}');
 }
 
+void write_numbers(fmt::memory_buffer& out, std::span<const double> values) {
+  out.push_back('[');
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) out.push_back(',');
+    write_number(out, values[i]);
+  }
+  out.push_back(']');
+}
+
+/// Always the full knot vector (n + p + 2 knots), whatever convention was read.
+void write_bspline(fmt::memory_buffer& out, const BSplineCurve& curve) {
+  fmt::format_to(std::back_inserter(out), "{{\"type\":\"bspline\",\"degree\":{},\"knots\":", curve.degree());
+  write_numbers(out, curve.knots());
+  fmt::format_to(std::back_inserter(out), ",\"control_points\":");
+  write_points(out, curve.control_points());
+  if (curve.is_rational()) {
+    fmt::format_to(std::back_inserter(out), ",\"weights\":");
+    write_numbers(out, curve.weights());
+  }
+  out.push_back('}');
+}
+
 void write_model(fmt::memory_buffer& out, const Model& model) {
   if (const auto* curve = std::get_if<BezierCurve>(&model)) {
     write_bezier(out, *curve);
+    return;
+  }
+  if (const auto* curve = std::get_if<BSplineCurve>(&model)) {
+    write_bspline(out, *curve);
     return;
   }
   const auto& piecewise = std::get<PiecewiseBezierCurve>(model);

@@ -22,12 +22,16 @@ namespace casteljau {
 /// - bad fields name their path: "model.json, models[1].control_points[2][0]:
 ///   expected a number, found a string", "model.json, models[0]: unknown field
 ///   'colour' (a bezier model has type, control_points, weights)";
-/// - types of the interface this version does not implement (bspline,
-///   bezier_surface, bspline_surface, coons): "... is not supported by this
-///   version of casteljau";
+/// - types of the interface this version does not implement (bezier_surface,
+///   bspline_surface, coons): "... is not supported by this version of casteljau";
 /// - empty control polygons, mixed dimensions, weights <= 0, a weights count
 ///   that differs from the control points', duplicate keys, more than
-///   tolerances::kMaxControlPoints control points in one model.
+///   tolerances::kMaxControlPoints control points in one model;
+/// - bspline models: a degree that is not a whole number in [0,
+///   kMaxBSplineDegree], fewer than p+1 control points, a knot count that is
+///   neither n+p+2 nor the Rhino/openNURBS n+p (converted by knots_from_rhino),
+///   knots that validate_knots refuses ("m.json, knots: knot 4 (0.5) is
+///   smaller than knot 3 (0.7), knots must be non-decreasing").
 /// O(size of the text); holds the parsed document in memory once.
 Expected<std::vector<Model>> parse_models_json(std::string_view text, const std::string& source);
 
@@ -44,7 +48,8 @@ Expected<std::vector<Model>> read_models(const std::filesystem::path& path);
 /// The model as model JSON (one object, one line), numbers in shortest
 /// round-trip form, so parse_models_json(to_json(m)) gives m back exactly.
 /// A piecewise curve writes polynomial pieces as arrays of points and
-/// rational pieces as bezier objects.
+/// rational pieces as bezier objects; a bspline always writes its full knot
+/// vector (n+p+2 knots), also when it was read in the Rhino convention.
 std::string to_json(const Model& model);
 
 /// Several models: the single object for one model, {"models": [...]} for
