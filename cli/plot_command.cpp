@@ -113,7 +113,7 @@ void add_plot_command(CLI::App& app, int& status) {
                    "Draw the de Casteljau construction at parameter T (global parameter of a piecewise curve)")
       ->type_name("T");
   plot->add_flag("--comb", options->comb, "Draw the curvature comb (teeth along the normal, length ~ curvature)");
-  plot->add_flag("--basis", options->basis, "Add a panel with the Bernstein basis of the first curve's degree");
+  plot->add_flag("--basis", options->basis, "Add a panel with the basis of the first curve: Bernstein of its degree, or the B-spline basis of its knots for a bspline model");
   plot->add_flag("--tangents", options->tangents, "Draw the end tangents along the first and last legs (blue)");
   plot->add_flag("--points-only", options->points_only, "Draw CSV point sets as points only, not as a curve");
   plot->callback([options, &status] { status = run_plot(*options); });

@@ -1,6 +1,8 @@
 // The gallery of seed figures (issue "Foundation"): the seed notebook's
-// pictures (seed 004), the semicircle of seed 003, and figures that explain
-// subdivision, flattening, degree elevation and Bézier's vector form.
+// pictures (seed 004), the semicircle of seed 003 (with the exact NURBS arc of
+// issue 4), and figures that explain subdivision, flattening, degree
+// elevation and Bézier's vector form. The B-spline and NURBS figures are in
+// gallery_bspline.cpp and come last.
 #include "markup.hpp"
 #include "casteljau/render/gallery.hpp"
 
@@ -16,9 +18,12 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bezier/split.hpp"
 #include "casteljau/bezier/vector_form.hpp"
+#include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
+#include "casteljau/nurbs/conics.hpp"
 #include "casteljau/ops/flatten.hpp"
+#include "casteljau/render/bspline_plots.hpp"
 #include "casteljau/render/plots.hpp"
 #include "casteljau/render/write.hpp"
 
@@ -50,16 +55,6 @@ Panel geometry_panel() {
   Panel panel;
   panel.equal_aspect = true;
   return panel;
-}
-
-/// The upper half circle of radius r about the origin, exactly: two rational
-/// quadratic arcs with middle weight cos(45°) (The NURBS Book, §7.3).
-std::vector<BezierCurve> half_circle(double r) {
-  const double w = std::numbers::sqrt2 / 2.0;
-  auto arc = [&](std::vector<double> coordinates) {
-    return BezierCurve::from_trusted(PointArray::from_trusted(2, std::move(coordinates)), {1.0, w, 1.0});
-  };
-  return {arc({r, 0.0, r, r, 0.0, r}), arc({0.0, r, -r, r, -r, 0.0})};
 }
 
 GalleryFigure bernstein_figure(int n, bool without_ends, std::string name, std::string explanation) {
@@ -182,18 +177,26 @@ GalleryFigure repeated_point_figure(const BezierCurve& curve, int index) {
           single("A repeated control point pulls the curve", 1000, 560, std::move(panel))};
 }
 
-GalleryFigure semicircle_figure(const BezierCurve& curve, const RadialError& error) {
+Expected<GalleryFigure> semicircle_figure(const BezierCurve& curve, const RadialError& error) {
+  // The exact half circle is seed_semicircle(): the NURBS arc of issue 4
+  // (two rational quadratic quarter arcs), drawn like every B-spline.
+  const BSplineCurve arc = seed_semicircle();
+  const RadialError exact = radial_error(arc, 3.0, static_cast<int>(error.parameters.size()));
   Figure figure;
   figure.title = "Seed 003: a cubic Bézier curve for a half circle of radius 3";
   figure.width = 800;
-  figure.height = 1000;
+  figure.height = 1300;
   Panel shape = geometry_panel();
-  shape.title = "A(-3,0) B(-3,4) C(3,4) D(3,0) against the exact half circle";
-  shape.y.range = std::array<double, 2>{-0.4, 5.8};  // room above for the legend
+  shape.title = "A(-3,0) B(-3,4) C(3,4) D(3,0) against the exact NURBS half circle";
+  shape.y.range = std::array<double, 2>{-0.4, 7.6};  // room above for the legend
   shape.polylines.push_back({plane_points(curve.control_points()), dashed(colors::gray, 1.0), "control polygon"});
-  shape.curves.push_back({half_circle(3.0), solid(cycle_color(0), 3.0), "half circle, radius 3 (exact rational arcs)"});
+  shape.polylines.push_back({plane_points(arc.control_points()), dotted(cycle_color(0), 1.0), "NURBS control polygon"});
+  if (auto ok = add_bspline(shape, arc, BSplinePlotOptions{}, cycle_color(0), "half circle, radius 3 (NURBS, exact)"); !ok)
+    return ok.error();
+  shape.curves.back().stroke = solid(cycle_color(0), 3.0);
   shape.curves.push_back({{curve}, solid(colors::black, 1.2), "cubic Bézier ABCD"});
   shape.markers.push_back({plane_points(curve.control_points()), colors::red, 6.0 * kPixelsPerPoint, "control points"});
+  shape.markers.push_back({plane_points(arc.control_points()), cycle_color(0), 5.0 * kPixelsPerPoint, ""});
   const char* names[] = {"A", "B", "C", "D"};
   const auto points = plane_points(curve.control_points());
   for (std::size_t i = 0; i < 4 && i < points.size(); ++i)
@@ -209,14 +212,32 @@ GalleryFigure semicircle_figure(const BezierCurve& curve, const RadialError& err
     values.push_back(Vec2{{error.parameters[i], error.errors[i]}});
   radial.polylines.push_back({values, solid(colors::black), ""});
   radial.polylines.push_back({{Vec2{{0.0, 0.0}}, Vec2{{1.0, 0.0}}}, dashed(colors::gray, 1.0), ""});
+  // Both errors on a log axis: 14 orders of magnitude apart. Where the
+  // NURBS arc's computed radius is exactly 3 the log plot has a gap.
+  Panel both;
+  both.title = fmt::format("| |C| - 3 | on a log axis: cubic max {:.2e}, NURBS arc max {:.1e}", error.maximum, exact.maximum);
+  both.x.label = "t (cubic), u (NURBS arc)";
+  both.y.label = "| |C| - 3 |";
+  both.y.logarithmic = true;
+  std::vector<Vec2> cubic_values, exact_values;
+  for (std::size_t i = 0; i < error.parameters.size(); i += 10)
+    cubic_values.push_back(Vec2{{error.parameters[i], std::abs(error.errors[i])}});
+  for (std::size_t i = 0; i < exact.parameters.size(); i += 10)
+    exact_values.push_back(Vec2{{exact.parameters[i], std::abs(exact.errors[i])}});
+  both.polylines.push_back({cubic_values, solid(colors::black, 1.2), "cubic Bézier"});
+  both.polylines.push_back({exact_values, solid(cycle_color(0), 1.0), "NURBS arc"});
+  both.legend = LegendPlace::lower_right;
   figure.panels.push_back(std::move(shape));
   figure.panels.push_back(std::move(radial));
-  return {"11_semicircle",
-          fmt::format("Seed 003's CNC example: the cubic A(-3,0) B(-3,4) C(3,4) D(3,0) against the exact half circle of "
-                      "radius 3; measured largest radial error {:.4f} ({:.2f} % of the radius, at t = {:.3f}), not the "
-                      "1/100 the seed claims.",
-                      error.maximum, 100.0 * error.maximum / 3.0, error.at),
-          std::move(figure)};
+  figure.panels.push_back(std::move(both));
+  return GalleryFigure{
+      "11_semicircle",
+      fmt::format("Seed 003's CNC example: the cubic A(-3,0) B(-3,4) C(3,4) D(3,0) against the exact half circle of "
+                  "radius 3 (seed_semicircle(), a NURBS arc of two rational quadratic pieces); measured largest radial "
+                  "error of the cubic {:.4f} ({:.2f} % of the radius, at t = {:.3f}), not the 1/100 the seed claims; "
+                  "of the NURBS arc {:.1e} ({:.1e} of the radius: rounding only).",
+                  error.maximum, 100.0 * error.maximum / 3.0, error.at, exact.maximum, exact.maximum / 3.0),
+      std::move(figure)};
 }
 
 Expected<GalleryFigure> subdivision_figure(const BezierCurve& curve) {
@@ -372,6 +393,20 @@ RadialError radial_error(const PointArray& control_points, double radius, int sa
   return result;
 }
 
+RadialError radial_error(const BSplineCurve& curve, double radius, int samples) {
+  const Interval domain = curve.domain();
+  RadialError result;
+  for (int i = 0; i < samples; ++i) {
+    const double u = domain.lerp(static_cast<double>(i) / (samples - 1));
+    const Point p = point_at(curve, u);
+    const double e = std::hypot(p[0], p[1]) - radius;
+    result.parameters.push_back(u);
+    result.errors.push_back(e);
+    if (std::abs(e) > result.maximum) result.maximum = std::abs(e), result.at = u;
+  }
+  return result;
+}
+
 Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path& examples_dir) {
   auto polygon = read_curve(examples_dir, "notebook_polygon.csv");
   if (!polygon) return polygon.error();
@@ -406,7 +441,9 @@ Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path
   figures.push_back(degree_200_figure(BezierCurve::from_trusted(notebook_cycle(kDegree)), comparison));
   figures.push_back(repeated_point_figure(*polygon, 2));
   const auto error = radial_error(semicircle->control_points(), 3.0, 20001);
-  figures.push_back(semicircle_figure(*semicircle, error));
+  auto semicircle_with_arc = semicircle_figure(*semicircle, error);
+  if (!semicircle_with_arc) return semicircle_with_arc.error();
+  figures.push_back(std::move(*semicircle_with_arc));
   auto subdivision = subdivision_figure(*polygon);
   if (!subdivision) return subdivision.error();
   figures.push_back(std::move(*subdivision));
@@ -416,6 +453,9 @@ Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path
   figures.push_back(elevation_figure(*polygon));
   figures.push_back(vector_form_figure(*semicircle, 0.4));
   figures.push_back(comb_figure(*cycle8, 8));
+  auto bspline = bspline_gallery_figures();
+  if (!bspline) return bspline.error();
+  for (auto& f : *bspline) figures.push_back(std::move(f));
   return figures;
 }
 

@@ -4,28 +4,32 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <variant>
 
 #include "casteljau/bezier/construction.hpp"
 #include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/render/bspline_plots.hpp"
 #include "casteljau/render/layout.hpp"
 
 namespace casteljau::render {
 namespace {
 
-/// True when some item of the panel already has this legend text: decorations
-/// of several curves (control points, tangents) are listed once.
-bool has_label(const Panel& panel, const std::string& text) {
-  auto same = [&](const auto& items) {
-    return std::any_of(items.begin(), items.end(), [&](const auto& item) { return item.label == text; });
-  };
-  return same(panel.regions) || same(panel.segments) || same(panel.polylines) || same(panel.curves) ||
-         same(panel.markers);
-}
-
-std::string once(const Panel& panel, const std::string& text) { return has_label(panel, text) ? std::string() : text; }
+std::string once(const Panel& panel, const std::string& text) { return label_once(panel, text); }
 
 Vec2 plane_point(std::span<const double> p) { return Vec2{{p[0], p[1]}}; }
+
+/// True when the variant V has the alternative T: the plot command draws
+/// B-splines once io's Model holds them, and compiles before that.
+template <class T, class V>
+struct holds_alternative_type : std::false_type {};
+template <class T, class... Ts>
+struct holds_alternative_type<T, std::variant<Ts...>> : std::bool_constant<(std::is_same_v<T, Ts> || ...)> {};
+
+const BSplineCurve* bspline_in(const Model& model) {
+  if constexpr (holds_alternative_type<BSplineCurve, Model>::value) return std::get_if<BSplineCurve>(&model);
+  else return nullptr;
+}
 
 Panel geometry_panel_for_plot() {
   Panel panel;
@@ -34,6 +38,15 @@ Panel geometry_panel_for_plot() {
 }
 
 }  // namespace
+
+std::string label_once(const Panel& panel, const std::string& text) {
+  auto same = [&](const auto& items) {
+    return std::any_of(items.begin(), items.end(), [&](const auto& item) { return item.label == text; });
+  };
+  const bool listed = same(panel.regions) || same(panel.segments) || same(panel.polylines) || same(panel.curves) ||
+                      same(panel.markers);
+  return listed ? std::string() : text;
+}
 
 std::array<double, 4> control_box(const BezierCurve& plane) {
   const auto& p = plane.control_points();
@@ -154,6 +167,8 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
   for (const auto& source : sources) curve_count += source.models.size();
   Panel panel = geometry_panel_for_plot();
   std::optional<int> first_degree;
+  std::optional<std::vector<double>> first_knots;  // the first curve's knots when it is a B-spline
+  bool first_rational = false;
   std::string title;
   int color_index = 0;
   for (const auto& source : sources) {
@@ -167,6 +182,27 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
     }
     for (std::size_t m = 0; m < source.models.size(); ++m) {
       const std::string name = source.models.size() == 1 ? source.name : fmt::format("{}[{}]", source.name, m);
+      if (const BSplineCurve* spline = bspline_in(source.models[m])) {
+        const Interval domain = spline->domain();
+        if (options.bezier.construction && !domain.contains(*options.bezier.construction))
+          return Error{fmt::format("--construction {} is outside the domain [{}, {}] of {}", *options.bezier.construction,
+                                   domain.lower, domain.upper, name)};
+        BSplinePlotOptions spline_options;
+        spline_options.control_polygon = options.bezier.control_polygon;
+        spline_options.control_points = options.bezier.control_points;
+        spline_options.end_tangents = options.bezier.end_tangents;
+        spline_options.curvature_comb = options.bezier.curvature_comb;
+        spline_options.construction = options.bezier.construction;
+        const Color color = curve_count == 1 ? colors::black : cycle_color(color_index++);
+        if (auto ok = add_bspline(panel, *spline, spline_options, color, curve_count == 1 ? "" : name); !ok)
+          return with_context(ok.error(), name);
+        if (!first_degree) {
+          first_degree = spline->degree();
+          first_knots = std::vector<double>(spline->knots().begin(), spline->knots().end());
+          first_rational = spline->is_rational();
+        }
+        continue;
+      }
       std::vector<BezierCurve> pieces;
       if (const auto* curve = std::get_if<BezierCurve>(&source.models[m])) pieces.push_back(*curve);
       else pieces = std::get<PiecewiseBezierCurve>(source.models[m]).pieces();
@@ -210,7 +246,15 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
   figure.title = title;
   figure.width = 900;
   figure.height = 700;
-  if (options.basis && first_degree) {
+  if (options.basis && first_degree && first_knots) {
+    auto basis = bspline_basis_panel(*first_knots, *first_degree);
+    if (!basis) return basis.error();
+    basis->title = fmt::format("B-spline basis N_(i,{}), knots {}{}", *first_degree, knots_text(*first_knots),
+                               first_rational ? " (without the weights)" : "");
+    figure.height = 1200;
+    figure.panels.push_back(std::move(panel));
+    figure.panels.push_back(std::move(*basis));
+  } else if (options.basis && first_degree) {
     auto basis = bernstein_basis_panel(std::max(*first_degree, 1));
     if (!basis) return basis.error();
     basis->title = fmt::format("Bernstein basis of degree {}", std::max(*first_degree, 1));

@@ -1,12 +1,13 @@
 #pragma once
 // The gallery: every seed figure (issue "Foundation", seed notebook 004 and
-// seed 003), rendered as SVG and PNG with an index.html that shows each one
+// seed 003; issue 4's B-spline and NURBS figures from seed 001), rendered as SVG and PNG with an index.html that shows each one
 // with one line of explanation. `casteljau gallery` and `make demo` call this.
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/render/figure.hpp"
@@ -47,6 +48,17 @@ struct RadialError {
   double at = 0.0;
 };
 RadialError radial_error(const PointArray& control_points, double radius, int samples);
+
+/// The same for a plane B-spline or NURBS curve (a circle or arc centred at
+/// the origin): |C(u)| - radius at `samples` evenly spaced u of its domain
+/// (parameters holds the u), by point_at (de Boor). samples >= 2.
+RadialError radial_error(const BSplineCurve& curve, double radius, int samples);
+
+/// The gallery's B-spline and NURBS figures (issue 4; they need no seed
+/// file): the basis for clamped and uniform knots (17, 18), local control
+/// (19), knot multiplicity and continuity (20), the NURBS circle (21) and the
+/// pull of one weight (22). gallery_figures() lists them last.
+Expected<std::vector<GalleryFigure>> bspline_gallery_figures();
 
 /// Every gallery figure, built from the CSV files in `examples_dir`.
 /// Errors: a missing or malformed seed file (named).

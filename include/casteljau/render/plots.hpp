@@ -25,6 +25,10 @@ struct BezierPlotOptions {
   bool curvature_comb = false;  ///< teeth along the normal, length proportional to the curvature
 };
 
+/// `text` when no item of the panel has it as legend text yet, else empty:
+/// decorations of several curves (control points, tangents) are listed once.
+std::string label_once(const Panel& panel, const std::string& text);
+
 /// Adds one curve (already in the plane, see plane_curve()) with its options
 /// to a panel. Labels go to the legend when `label` is not empty.
 void add_bezier(Panel& panel, const BezierCurve& plane, const BezierPlotOptions& options,
@@ -60,7 +64,9 @@ struct PlotSource {
 };
 
 /// What `plot` draws: the options for every curve, and a second panel with the
-/// Bernstein basis of the first curve's degree.
+/// basis of the first curve: the Bernstein basis of its degree, or for a
+/// B-spline (bspline model) its B-spline basis N_{i,p} on its knots
+/// (bspline_basis_panel; weights are not applied).
 struct PlotOptions {
   BezierPlotOptions bezier;
   bool basis = false;
@@ -71,7 +77,9 @@ struct PlotOptions {
 /// (plane_curve: 3D curves projected on x, y; 1D curves as graphs). A
 /// piecewise curve gets the options piece by piece; its construction is drawn
 /// on the piece holding the global parameter T in [0, m], its end tangents at
-/// its two ends. Errors: no source; a construction parameter outside a
+/// its two ends. A B-spline or NURBS curve is drawn by add_bspline
+/// (bspline_plots.hpp): its own control polygon and points, the de Boor net
+/// as its construction at u in its domain. Errors: no source; a construction parameter outside a
 /// curve's domain (named); a rational curve of dimension 1.
 Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotOptions& options);
 
