@@ -7,6 +7,9 @@
 # Exits non-zero if a binary fails or a row reported an error (a benchmark
 # whose output check failed calls SkipWithError).
 #
+# W1/W2 rows of scipy come from bench/w1_scipy.py (run by /usr/bin/python3,
+# pinned the same way) when Debian's scipy is installed.
+#
 # Environment: CASTELJAU_BENCH_DIR (default build-bench/bench),
 # CASTELJAU_BENCH_CPU (default 0), CASTELJAU_BENCH_OUT (default out/bench),
 # CASTELJAU_BENCH_FILTER (a --benchmark_filter regex, default all).
@@ -32,27 +35,10 @@ if [[ ${#binaries[@]} -eq 0 ]]; then
 fi
 
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
-status=0
-for binary in "${binaries[@]}"; do
-  name="$(basename "$binary")"
-  json="$out_dir/$name.json"
-  echo "== $name -> $json"
-  if ! "${pin[@]}" "$binary" \
-      --benchmark_filter="$filter" \
-      --benchmark_repetitions=3 \
-      --benchmark_enable_random_interleaving=true \
-      --benchmark_report_aggregates_only=false \
-      --benchmark_out="$json" --benchmark_out_format=json \
-      >"$out_dir/$name.txt" 2>&1; then
-    echo "   $name failed (see $out_dir/$name.txt)"
-    status=1
-    continue
-  fi
-  if [[ ! -s "$json" ]]; then
-    echo "   (no row of $name matches the filter '$filter')"
-    continue
-  fi
-  /usr/bin/python3 - "$json" <<'EOF' || status=1
+# Prints one line per row of a Google Benchmark JSON file; fails if a row
+# reported an error.
+summarize() {
+  /usr/bin/python3 - "$1" <<'EOF'
 import json, sys
 from collections import OrderedDict
 
@@ -97,5 +83,42 @@ for name, row in sorted(rows.items(), key=lambda item: item[1]["order"]):
     print("   %-*s %s%s %s" % (width, name, rate(med), spread, counters))
 sys.exit(1 if failed else 0)
 EOF
+}
+
+status=0
+for binary in "${binaries[@]}"; do
+  name="$(basename "$binary")"
+  json="$out_dir/$name.json"
+  echo "== $name -> $json"
+  if ! "${pin[@]}" "$binary" \
+      --benchmark_filter="$filter" \
+      --benchmark_repetitions=3 \
+      --benchmark_enable_random_interleaving=true \
+      --benchmark_report_aggregates_only=false \
+      --benchmark_out="$json" --benchmark_out_format=json \
+      >"$out_dir/$name.txt" 2>&1; then
+    echo "   $name failed (see $out_dir/$name.txt)"
+    status=1
+    continue
+  fi
+  if [[ ! -s "$json" ]]; then
+    echo "   (no row of $name matches the filter '$filter')"
+    continue
+  fi
+  summarize "$json" || status=1
 done
+
+# scipy's rows for W1/W2 (bench/w1_scipy.py), when Debian's scipy is there.
+if [[ "W1/sorted/scipy-BSpline W1/random/scipy-BSpline W2/sorted/scipy-BSpline" =~ $filter ]] && \
+    /usr/bin/python3 -c "import scipy" >/dev/null 2>&1; then
+  json="$out_dir/w1_scipy.json"
+  echo "== w1_scipy.py -> $json"
+  if "${pin[@]}" /usr/bin/python3 bench/w1_scipy.py --repetitions 3 --out "$json" >"$out_dir/w1_scipy.txt" 2>&1; then
+    summarize "$json" || status=1
+  else
+    echo "   w1_scipy.py failed (see $out_dir/w1_scipy.txt)"
+    summarize "$json" || true
+    status=1
+  fi
+fi
 exit $status

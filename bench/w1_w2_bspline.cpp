@@ -1,0 +1,413 @@
+// W1 and W2 (shared/docs/performance.md): a cubic B-spline curve in 3D with
+// 1000 control points in [0,100)^3 and clamped uniform knots on [0,1];
+// 10^6 parameters uniform in [0,1), (a) sorted, (b) in drawn (random)
+// order; W1 writes the points, W2 the points and first derivatives, into
+// preallocated arrays. Data from fixed splitmix64 streams.
+// Rows: W1/sorted/<impl>, W1/random/<impl>, W2/sorted/<impl>, W2/random/<impl>.
+//
+// Every row checks its output after timing against casteljau's scalar
+// point_at / derivative_at(u, 1) on every 1000th parameter and fails
+// (SkipWithError) if a coordinate differs by more than kRelativeBound
+// times the scale (100 for points; the largest derivative coordinate of
+// the sample for derivatives). The row reports the largest difference as
+// max_error_rel. The casteljau rows also require bit-for-bit equality with
+// the scalar functions.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "casteljau/bspline/basis.hpp"
+#include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/bspline/knot_vector.hpp"
+
+#if __has_include(<unsupported/Eigen/Splines>)
+#include <unsupported/Eigen/Splines>
+#define CASTELJAU_HAVE_EIGEN_SPLINES 1
+#endif
+
+#if defined(CASTELJAU_HAVE_OCCT)
+#include <BSplCLib.hxx>
+#include <GeomAdaptor_Curve.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#endif
+
+#if defined(CASTELJAU_HAVE_SISL)
+#include <sisl.h>
+#endif
+
+namespace {
+
+using casteljau::BSplineCurve;
+
+constexpr int kDegree = 3;
+constexpr std::size_t kControlPoints = 1000;
+constexpr std::size_t kParameters = 1'000'000;
+constexpr std::size_t kCheckStride = 1000;
+constexpr double kScale = 100.0;
+/// Far above rounding (1e-13 of the scale), far below any wrong answer.
+constexpr double kRelativeBound = 1e-9;
+
+struct Random {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+  }
+  double unit() { return static_cast<double>(next() >> 11) * 0x1p-53; }
+};
+
+struct Data {
+  std::vector<double> control;  // kControlPoints x 3
+  std::vector<double> knots;    // clamped uniform, n + p + 2
+  BSplineCurve curve;
+  std::vector<double> sorted, random;
+  std::vector<double> points, derivatives;
+};
+
+Data make_data() {
+  Random control_random{20261122u};
+  std::vector<double> control(kControlPoints * 3);
+  for (double& x : control) x = kScale * control_random.unit();
+  std::vector<double> knots = casteljau::clamped_uniform_knots(kDegree, kControlPoints);
+  BSplineCurve curve = BSplineCurve::from_trusted(kDegree, knots, casteljau::PointArray::from_trusted(3, control));
+  Random parameter_random{4242u};
+  std::vector<double> random(kParameters);
+  for (double& u : random) u = parameter_random.unit();
+  std::vector<double> sorted = random;
+  std::sort(sorted.begin(), sorted.end());
+  return Data{std::move(control), std::move(knots), std::move(curve), std::move(sorted), std::move(random),
+              std::vector<double>(kParameters * 3), std::vector<double>(kParameters * 3)};
+}
+
+Data& data() {
+  static Data d = make_data();
+  return d;
+}
+
+/// One implementation: evaluates the points (and, if derivatives is
+/// non-null, the first derivatives) of every parameter of us.
+using Implementation = void (*)(const std::vector<double>& us, double* points, double* derivatives);
+
+// --- casteljau --------------------------------------------------------------------
+
+void run_casteljau(const std::vector<double>& us, double* points, double* derivatives) {
+  const BSplineCurve& curve = data().curve;
+  if (derivatives) {
+    casteljau::points_and_derivatives_at(curve, us, {points, us.size() * 3}, {derivatives, us.size() * 3});
+  } else {
+    casteljau::points_at(curve, us, {points, us.size() * 3});
+  }
+}
+
+// --- textbook: The NURBS Book A2.1 (span), A2.2 / A2.3 (basis), A3.1 / A3.2 ---------
+
+void run_textbook(const std::vector<double>& us, double* points, double* derivatives) {
+  const std::vector<double>& t = data().knots;
+  const double* P = data().control.data();
+  constexpr int p = kDegree;
+  const int n = static_cast<int>(kControlPoints) - 1;
+  for (std::size_t k = 0; k < us.size(); ++k) {
+    const double u = us[k];
+    // A2.1: binary search, the end of the domain closed.
+    int span;
+    if (u >= t[static_cast<std::size_t>(n + 1)]) {
+      span = n;
+    } else {
+      int low = p, high = n + 1;
+      span = (low + high) / 2;
+      while (u < t[static_cast<std::size_t>(span)] || u >= t[static_cast<std::size_t>(span + 1)]) {
+        if (u < t[static_cast<std::size_t>(span)]) high = span; else low = span;
+        span = (low + high) / 2;
+      }
+    }
+    // A2.3 up to the first derivative (A2.2 when only points are needed).
+    double left[p + 1], right[p + 1], ndu[p + 1][p + 1];
+    ndu[0][0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+      left[j] = u - t[static_cast<std::size_t>(span + 1 - j)];
+      right[j] = t[static_cast<std::size_t>(span + j)] - u;
+      double saved = 0.0;
+      for (int r = 0; r < j; ++r) {
+        ndu[j][r] = right[r + 1] + left[j - r];
+        const double temp = ndu[r][j - 1] / ndu[j][r];
+        ndu[r][j] = saved + right[r + 1] * temp;
+        saved = left[j - r] * temp;
+      }
+      ndu[j][j] = saved;
+    }
+    double x = 0, y = 0, z = 0;
+    for (int j = 0; j <= p; ++j) {
+      const double* q = P + 3 * (span - p + j);
+      const double N = ndu[j][p];
+      x += N * q[0];
+      y += N * q[1];
+      z += N * q[2];
+    }
+    points[3 * k] = x;
+    points[3 * k + 1] = y;
+    points[3 * k + 2] = z;
+    if (derivatives) {
+      // N'_{i,p} = p (N_{i,p-1}/(t_{i+p} - t_i) - N_{i+1,p-1}/(t_{i+p+1} - t_{i+1})), from ndu's column p-1.
+      double dx = 0, dy = 0, dz = 0;
+      for (int j = 0; j <= p; ++j) {
+        double dN = 0.0;
+        if (j >= 1) dN += ndu[j - 1][p - 1] / ndu[p][j - 1];
+        if (j <= p - 1) dN -= ndu[j][p - 1] / ndu[p][j];
+        dN *= p;
+        const double* q = P + 3 * (span - p + j);
+        dx += dN * q[0];
+        dy += dN * q[1];
+        dz += dN * q[2];
+      }
+      derivatives[3 * k] = dx;
+      derivatives[3 * k + 1] = dy;
+      derivatives[3 * k + 2] = dz;
+    }
+  }
+}
+
+// --- Eigen 3.4 unsupported/Eigen/Splines --------------------------------------------
+
+#if defined(CASTELJAU_HAVE_EIGEN_SPLINES)
+using EigenSpline = Eigen::Spline<double, 3, kDegree>;
+const EigenSpline& eigen_spline() {
+  static const EigenSpline spline = [] {
+    Eigen::Array<double, 1, Eigen::Dynamic> knots(static_cast<Eigen::Index>(data().knots.size()));
+    for (std::size_t i = 0; i < data().knots.size(); ++i) knots(static_cast<Eigen::Index>(i)) = data().knots[i];
+    Eigen::Matrix<double, 3, Eigen::Dynamic> control(3, static_cast<Eigen::Index>(kControlPoints));
+    for (std::size_t i = 0; i < kControlPoints; ++i)
+      for (int j = 0; j < 3; ++j) control(j, static_cast<Eigen::Index>(i)) = data().control[3 * i + static_cast<std::size_t>(j)];
+    return EigenSpline(knots, control);
+  }();
+  return spline;
+}
+
+void run_eigen(const std::vector<double>& us, double* points, double* derivatives) {
+  const EigenSpline& spline = eigen_spline();
+  for (std::size_t k = 0; k < us.size(); ++k) {
+    if (derivatives) {
+      const auto both = spline.derivatives<1>(us[k]);
+      for (int j = 0; j < 3; ++j) {
+        points[3 * k + static_cast<std::size_t>(j)] = both(j, 0);
+        derivatives[3 * k + static_cast<std::size_t>(j)] = both(j, 1);
+      }
+    } else {
+      const auto p = spline(us[k]);
+      for (int j = 0; j < 3; ++j) points[3 * k + static_cast<std::size_t>(j)] = p(j);
+    }
+  }
+}
+#endif
+
+// --- OpenCASCADE 7.6 ------------------------------------------------------------------
+
+#if defined(CASTELJAU_HAVE_OCCT)
+struct Occt {
+  TColgp_Array1OfPnt poles;
+  TColStd_Array1OfReal knots;
+  TColStd_Array1OfInteger mults;
+  Handle(Geom_BSplineCurve) curve;
+  Occt() : poles(1, static_cast<int>(kControlPoints)), knots(1, static_cast<int>(kControlPoints) - kDegree + 1),
+           mults(1, static_cast<int>(kControlPoints) - kDegree + 1) {
+    for (int i = 0; i < static_cast<int>(kControlPoints); ++i) {
+      const double* q = data().control.data() + 3 * i;
+      poles.SetValue(i + 1, gp_Pnt(q[0], q[1], q[2]));
+    }
+    // The distinct knots and their multiplicities (clamped: p+1 at the ends).
+    const int distinct = static_cast<int>(kControlPoints) - kDegree + 1;
+    for (int i = 0; i < distinct; ++i) {
+      knots.SetValue(i + 1, data().knots[static_cast<std::size_t>(kDegree + i)]);
+      mults.SetValue(i + 1, (i == 0 || i == distinct - 1) ? kDegree + 1 : 1);
+    }
+    curve = new Geom_BSplineCurve(poles, knots, mults, kDegree);
+  }
+};
+Occt& occt() {
+  static Occt o;
+  return o;
+}
+
+/// GeomAdaptor_Curve::D0 / D1: OpenCASCADE's cached evaluation (per-span
+/// power-basis cache, rebuilt when the parameter leaves the cached span).
+void run_occt_adaptor(const std::vector<double>& us, double* points, double* derivatives) {
+  GeomAdaptor_Curve adaptor(occt().curve);
+  gp_Pnt p;
+  gp_Vec v;
+  for (std::size_t k = 0; k < us.size(); ++k) {
+    if (derivatives) {
+      adaptor.D1(us[k], p, v);
+      derivatives[3 * k] = v.X();
+      derivatives[3 * k + 1] = v.Y();
+      derivatives[3 * k + 2] = v.Z();
+    } else {
+      adaptor.D0(us[k], p);
+    }
+    points[3 * k] = p.X();
+    points[3 * k + 1] = p.Y();
+    points[3 * k + 2] = p.Z();
+  }
+}
+
+/// BSplCLib::LocateParameter then BSplCLib::D0 / D1: the uncached kernel.
+void run_occt_bsplclib(const std::vector<double>& us, double* points, double* derivatives) {
+  const Occt& o = occt();
+  gp_Pnt p;
+  gp_Vec v;
+  for (std::size_t k = 0; k < us.size(); ++k) {
+    Standard_Integer index = 0;
+    Standard_Real u = 0.0;
+    BSplCLib::LocateParameter(kDegree, o.knots, &o.mults, us[k], Standard_False, index, u);
+    if (derivatives) {
+      BSplCLib::D1(u, index, kDegree, Standard_False, o.poles, nullptr, o.knots, &o.mults, p, v);
+      derivatives[3 * k] = v.X();
+      derivatives[3 * k + 1] = v.Y();
+      derivatives[3 * k + 2] = v.Z();
+    } else {
+      BSplCLib::D0(u, index, kDegree, Standard_False, o.poles, nullptr, o.knots, &o.mults, p);
+    }
+    points[3 * k] = p.X();
+    points[3 * k + 1] = p.Y();
+    points[3 * k + 2] = p.Z();
+  }
+}
+#endif
+
+// --- SISL 4.6 -----------------------------------------------------------------------------
+
+#if defined(CASTELJAU_HAVE_SISL)
+SISLCurve* sisl_curve() {
+  static SISLCurve* curve = [] {
+    std::vector<double> knots = data().knots, control = data().control;
+    // newCurve with icopy = 1 copies the arrays; kind 1: polynomial B-spline.
+    return newCurve(static_cast<int>(kControlPoints), kDegree + 1, knots.data(), control.data(), 1, 3, 1);
+  }();
+  return curve;
+}
+
+/// s1221: value and derivatives from the right, with the span hint ileft
+/// carried from one parameter to the next (as a sorted caller would).
+void run_sisl(const std::vector<double>& us, double* points, double* derivatives) {
+  SISLCurve* curve = sisl_curve();
+  int left = 0, status = 0;
+  double out[6];
+  const int order = derivatives ? 1 : 0;
+  for (std::size_t k = 0; k < us.size(); ++k) {
+    s1221(curve, order, us[k], &left, out, &status);
+    points[3 * k] = out[0];
+    points[3 * k + 1] = out[1];
+    points[3 * k + 2] = out[2];
+    if (derivatives) {
+      derivatives[3 * k] = out[3];
+      derivatives[3 * k + 1] = out[4];
+      derivatives[3 * k + 2] = out[5];
+    }
+  }
+}
+#endif
+
+// --- rows ---------------------------------------------------------------------------------
+
+/// Largest difference from the scalar reference on the sample, relative to the
+/// scale (points: 100; derivatives: the largest derivative coordinate), and
+/// whether every sampled coordinate matched bit for bit.
+struct Check {
+  double error = 0.0;
+  bool bitwise = true;
+};
+
+Check check(const std::vector<double>& us, const double* points, const double* derivatives) {
+  Check result;
+  double derivative_scale = 0.0;
+  std::vector<casteljau::Point> references;
+  for (std::size_t k = 0; k < us.size(); k += kCheckStride) {
+    if (derivatives) {
+      references.push_back(casteljau::derivative_at(data().curve, us[k], 1));
+      for (double x : references.back()) derivative_scale = std::max(derivative_scale, std::abs(x));
+    }
+  }
+  std::size_t sample = 0;
+  for (std::size_t k = 0; k < us.size(); k += kCheckStride, ++sample) {
+    const casteljau::Point point = casteljau::point_at(data().curve, us[k]);
+    for (std::size_t j = 0; j < 3; ++j) {
+      const double value = points[3 * k + j];
+      const double error = std::isfinite(value) ? std::abs(value - point[j]) / kScale : INFINITY;
+      result.error = std::max(result.error, error);
+      result.bitwise &= value == point[j];
+      if (derivatives) {
+        const double slope = derivatives[3 * k + j];
+        const double reference = references[sample][j];
+        const double slope_error = std::isfinite(slope) ? std::abs(slope - reference) / derivative_scale : INFINITY;
+        result.error = std::max(result.error, slope_error);
+        result.bitwise &= slope == reference;
+      }
+    }
+  }
+  return result;
+}
+
+void run_row(benchmark::State& state, bool derivative, bool sorted, Implementation implementation, bool bitwise) {
+  Data& d = data();
+  const std::vector<double>& us = sorted ? d.sorted : d.random;
+  std::fill(d.points.begin(), d.points.end(), NAN);
+  std::fill(d.derivatives.begin(), d.derivatives.end(), NAN);
+  double* derivatives = derivative ? d.derivatives.data() : nullptr;
+  for (auto _ : state) {
+    implementation(us, d.points.data(), derivatives);
+    benchmark::DoNotOptimize(d.points.data());
+    benchmark::DoNotOptimize(d.derivatives.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(us.size()));
+  const Check c = check(us, d.points.data(), derivatives);
+  state.counters["max_error_rel"] = c.error;
+  if (!(c.error <= kRelativeBound)) {
+    state.SkipWithError(("relative error " + std::to_string(c.error) + " exceeds the bound").c_str());
+  } else if (bitwise && !c.bitwise) {
+    state.SkipWithError("batch result differs from the scalar functions");
+  }
+}
+
+void register_rows() {
+  for (int derivative = 0; derivative <= 1; ++derivative) {
+    for (int sorted = 1; sorted >= 0; --sorted) {
+      const std::string prefix = std::string(derivative ? "W2/" : "W1/") + (sorted ? "sorted/" : "random/");
+      auto add = [&](const char* name, Implementation implementation, bool bitwise = false) {
+        benchmark::RegisterBenchmark((prefix + name).c_str(), [=](benchmark::State& state) {
+          run_row(state, derivative == 1, sorted == 1, implementation, bitwise);
+        })->Unit(benchmark::kMillisecond)->UseRealTime();
+      };
+      add("casteljau", &run_casteljau, true);
+      add("textbook-A3.1", &run_textbook);
+#if defined(CASTELJAU_HAVE_EIGEN_SPLINES)
+      add("eigen-spline", &run_eigen);
+#endif
+#if defined(CASTELJAU_HAVE_OCCT)
+      add("occt-adaptor", &run_occt_adaptor);
+      add("occt-bsplclib", &run_occt_bsplclib);
+#endif
+#if defined(CASTELJAU_HAVE_SISL)
+      add("sisl-s1221", &run_sisl);
+#endif
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  register_rows();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
