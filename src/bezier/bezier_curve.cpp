@@ -1,7 +1,7 @@
 #include "casteljau/bezier/bezier_curve.hpp"
 
 #include "casteljau/core/tolerance.hpp"
-#include "../core/number_text.hpp"
+#include "../core/weights.hpp"
 
 #include <cassert>
 #include <cmath>
@@ -25,19 +25,7 @@ Expected<BezierCurve> BezierCurve::make(PointArray control_points, std::vector<d
       return ok.error();
     }
   }
-  if (!weights.empty()) {
-    if (weights.size() != control_points.size()) {
-      return Error{std::to_string(weights.size()) + " weights for " + std::to_string(control_points.size()) +
-                   " control points, there must be one weight per control point"};
-    }
-    for (std::size_t i = 0; i < weights.size(); ++i) {
-      if (auto ok = check_finite(weights[i], "weight " + std::to_string(i)); !ok) return ok.error();
-      if (!(weights[i] > 0.0)) {
-        return Error{"weight " + std::to_string(i) + " is " + detail::number_text(weights[i]) +
-                     ", weights must be > 0"};
-      }
-    }
-  }
+  if (auto ok = detail::check_weights(weights, control_points.size()); !ok) return ok.error();
   return BezierCurve(std::move(control_points), std::move(weights));
 }
 

@@ -8,6 +8,7 @@
 #include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
+#include "../core/weights.hpp"
 
 namespace casteljau {
 
@@ -35,19 +36,7 @@ Expected<BSplineCurve> BSplineCurve::make(int degree, std::vector<double> knots,
     }
   }
   if (auto ok = validate_knots(knots, degree, count); !ok) return ok.error();
-  if (!weights.empty()) {
-    if (weights.size() != count) {
-      return Error{std::to_string(weights.size()) + " weights for " + std::to_string(count) +
-                   " control points, there must be one weight per control point"};
-    }
-    for (std::size_t i = 0; i < weights.size(); ++i) {
-      if (auto ok = check_finite(weights[i], "weight " + std::to_string(i)); !ok) return ok.error();
-      if (!(weights[i] > 0.0)) {
-        return Error{"weight " + std::to_string(i) + " is " + detail::number_text(weights[i]) +
-                     ", weights must be > 0"};
-      }
-    }
-  }
+  if (auto ok = detail::check_weights(weights, count); !ok) return ok.error();
   return BSplineCurve(degree, std::move(knots), std::move(control_points), std::move(weights));
 }
 

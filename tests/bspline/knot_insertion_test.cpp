@@ -19,19 +19,13 @@
 namespace casteljau {
 namespace {
 
-/// The cubic of The NURBS Book Example 5.1: U = {0,0,0,0,1,2,3,4,5,5,5,5},
-/// eight control points (ours; the book leaves them symbolic).
-BSplineCurve example_5_1() {
-  return BSplineCurve::make(3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5},
-                            PointArray::make({{0, 0}, {1, 3}, {2.5, 4}, {4, 1}, {6, 2}, {7, 5}, {9, 4.5}, {10, 0}}).value())
-      .value();
-}
+using test::book_example_5_1;
 
 TEST(InsertKnot, BookExample5_1) {
   // Inserting u = 5/2 into span [2,3) (k = 5): the book gives
   // alpha_3 = 5/6, alpha_4 = 1/2, alpha_5 = 1/6 and Q_i = a_i P_i + (1 - a_i) P_{i-1}
   // for i = 3, 4, 5; the other points are kept (shifted by one after Q_5).
-  const auto curve = example_5_1();
+  const auto curve = book_example_5_1();
   const auto inserted = insert_knot(curve, 2.5).value();
   const std::vector<double> expected_knots = {0, 0, 0, 0, 1, 2, 2.5, 3, 4, 5, 5, 5, 5};
   EXPECT_EQ(std::vector<double>(inserted.knots().begin(), inserted.knots().end()), expected_knots);
@@ -106,7 +100,7 @@ RC_GTEST_PROP(RefineKnots, KeepsTheShapeAndMatchesRepeatedInsertion, ()) {
 TEST(InsertKnot, UpToMultiplicityDegreePlusOneKeepsTheCurveContinuous) {
   // A5.1 stops at multiplicity p; the refinement kernel goes to p+1, which
   // only duplicates the point C(u) (the curve does not jump).
-  const auto curve = example_5_1();
+  const auto curve = book_example_5_1();
   const auto full = insert_knot(curve, 2.5, 4).value();
   EXPECT_EQ(multiplicity_of(full.knots(), 2.5), 4);
   const Point at = point_at(curve, 2.5);
@@ -117,13 +111,13 @@ TEST(InsertKnot, UpToMultiplicityDegreePlusOneKeepsTheCurveContinuous) {
 }
 
 TEST(InsertKnot, ZeroTimesIsTheSameCurve) {
-  const auto curve = example_5_1();
+  const auto curve = book_example_5_1();
   EXPECT_EQ(insert_knot(curve, 1.5, 0).value(), curve);
   EXPECT_EQ(refine_knots(curve, {}).value(), curve);
 }
 
 TEST(InsertKnot, RefusesBadRequestsWithClearMessages) {
-  const auto curve = example_5_1();
+  const auto curve = book_example_5_1();
   auto outside = insert_knot(curve, 7.5);
   ASSERT_FALSE(outside.has_value());
   EXPECT_EQ(outside.error().message, "knot to insert (7.5) is outside the domain [0, 5]");

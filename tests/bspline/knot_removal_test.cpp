@@ -16,14 +16,10 @@
 namespace casteljau {
 namespace {
 
-BSplineCurve example_5_1() {
-  return BSplineCurve::make(3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5},
-                            PointArray::make({{0, 0}, {1, 3}, {2.5, 4}, {4, 1}, {6, 2}, {7, 5}, {9, 4.5}, {10, 0}}).value())
-      .value();
-}
+using test::book_example_5_1;
 
 TEST(RemoveKnot, UndoesTheBookExample5_1Insertion) {
-  const auto curve = example_5_1();
+  const auto curve = book_example_5_1();
   const auto inserted = insert_knot(curve, 2.5).value();
   const auto removal = remove_knot(inserted, 2.5, 1, Tolerance{1e-12}).value();
   EXPECT_EQ(removal.removed, 1);
@@ -102,7 +98,7 @@ RC_GTEST_PROP(RemoveKnot, OneKnotStaysWithinItsBound, ()) {
 
 TEST(RemoveKnot, KeepsAKnotThatIsNotRemovable) {
   // Example 5.1's knot 2 is a genuine C^2 joint of generic points.
-  const auto curve = example_5_1();
+  const auto curve = book_example_5_1();
   const auto removal = remove_knot(curve, 2.0, 1, Tolerance{1e-6}).value();
   EXPECT_EQ(removal.removed, 0);
   EXPECT_EQ(removal.error_bound, 0.0);
@@ -110,7 +106,7 @@ TEST(RemoveKnot, KeepsAKnotThatIsNotRemovable) {
 }
 
 TEST(RemoveKnot, RefusesBadRequestsWithClearMessages) {
-  const auto curve = example_5_1();
+  const auto curve = book_example_5_1();
   auto not_a_knot = remove_knot(curve, 2.5, 1, Tolerance{1e-6});
   ASSERT_FALSE(not_a_knot.has_value());
   EXPECT_EQ(not_a_knot.error().message, "2.5 is not a knot of the curve, it cannot be removed");

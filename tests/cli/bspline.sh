@@ -5,50 +5,7 @@
 # stderr naming the field, nothing written).
 # Known values are worked by hand on dyadic data, so they are exact (below).
 # Usage: bash bspline.sh CASTELJAU EXAMPLES_DIR
-set -u
-casteljau=$1
-examples=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-
-# check NAME EXPECTED ARGS...: stdout must be EXPECTED, stderr empty, exit 0.
-check() {
-  local name=$1 expected=$2
-  shift 2
-  local out err status
-  out=$("$casteljau" "$@" 2>"$work/stderr")
-  status=$?
-  err=$(cat "$work/stderr")
-  if [[ $status -ne 0 || "$out" != "$expected" || -n "$err" ]]; then
-    echo "FAIL: $name: casteljau $*"
-    echo "  exit $status, stdout: $(printf '%q' "$out"), stderr: $err"
-    echo "  expected stdout: $(printf '%q' "$expected")"
-    failures=$((failures + 1))
-  fi
-}
-
-# expect_error NAME EXPECTED_SUBSTRING ARGS...: exit 2, nothing on stdout,
-# exactly one line "casteljau: error: ..." containing EXPECTED_SUBSTRING.
-expect_error() {
-  local name=$1 expected=$2
-  shift 2
-  "$casteljau" "$@" >"$work/stdout" 2>"$work/stderr"
-  local status=$?
-  local lines message
-  lines=$(wc -l <"$work/stderr")
-  message=$(cat "$work/stderr")
-  if [[ $status -ne 2 || -s "$work/stdout" || $lines -ne 1 || "$message" != "casteljau: error: "* ||
-        "$message" != *"$expected"* ]]; then
-    echo "FAIL: $name: casteljau $*"
-    echo "  exit $status (expected 2), stdout bytes $(wc -c <"$work/stdout"), stderr lines $lines"
-    echo "  stderr: $message"
-    echo "  expected to contain: $expected"
-    failures=$((failures + 1))
-  fi
-}
-
-model() { printf '%s' "$2" > "$work/$1"; }
+source "$(dirname "$0")/support/common.sh" "$@"
 
 # --- eval ----------------------------------------------------------------------
 # A uniform quadratic on [2, 4] (knots 2,2,2,3,4,4,4), P = (0,0) (2,4) (4,0) (6,4).
@@ -158,8 +115,4 @@ expect_error "weight path in a list" "nested.json, models[1].weights[2]: the wei
 expect_error "plot of a bad model" "zero.json, weights[1]" plot "$work/zero.json" -o "$work/bad.svg"
 [[ ! -e "$work/bad.svg" ]] || { echo "FAIL: plot wrote a figure of a bad model"; failures=$((failures + 1)); }
 
-if [[ $failures -ne 0 ]]; then
-  echo "$failures failure(s)"
-  exit 1
-fi
-echo "bspline CLI: all passed"
+finish "bspline CLI"

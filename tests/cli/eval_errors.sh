@@ -2,35 +2,8 @@
 # casteljau eval: every kind of bad input exits 2 with exactly one line on
 # stderr, "casteljau: error: ...", naming what and where, and prints nothing
 # on stdout. Usage: bash eval_errors.sh CASTELJAU EXAMPLES_DIR
-set -u
-casteljau=$1
-examples=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "$0")/support/common.sh" "$@"
 polygon="$examples/notebook_polygon.csv"
-
-# expect_error NAME EXPECTED_SUBSTRING ARGS...
-expect_error() {
-  local name=$1 expected=$2
-  shift 2
-  "$casteljau" "$@" >"$work/stdout" 2>"$work/stderr"
-  local status=$?
-  local lines
-  lines=$(wc -l <"$work/stderr")
-  local message
-  message=$(cat "$work/stderr")
-  if [[ $status -ne 2 || -s "$work/stdout" || $lines -ne 1 || "$message" != "casteljau: error: "* ||
-        "$message" != *"$expected"* ]]; then
-    echo "FAIL: $name: casteljau $*"
-    echo "  exit $status (expected 2), stdout bytes $(wc -c <"$work/stdout"), stderr lines $lines"
-    echo "  stderr: $message"
-    echo "  expected to contain: $expected"
-    failures=$((failures + 1))
-  fi
-}
-
-model() { printf '%s' "$2" > "$work/$1"; }
 
 # --- model JSON ---------------------------------------------------------------
 expect_error "missing file" "cannot open '$work/none.json': No such file or directory" eval "$work/none.json" --at 0
@@ -114,8 +87,4 @@ expect_error "missing MODEL" "MODEL" eval --at 0
 expect_error "-o into a missing folder" "cannot write '$work/no/such/out.csv': No such file or directory" \
   eval "$polygon" --at 0 -o "$work/no/such/out.csv"
 
-if [[ $failures -ne 0 ]]; then
-  echo "$failures failure(s)"
-  exit 1
-fi
-echo "eval errors: all passed"
+finish "eval errors"

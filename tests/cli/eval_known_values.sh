@@ -2,28 +2,7 @@
 # casteljau eval: known values through the command line, and output that
 # reads back (in Python, an independent reader) to the same doubles.
 # Usage: bash eval_known_values.sh CASTELJAU EXAMPLES_DIR
-set -u
-casteljau=$1
-examples=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-
-# check NAME EXPECTED ARGS...: stdout must be EXPECTED, stderr empty, exit 0.
-check() {
-  local name=$1 expected=$2
-  shift 2
-  local out err status
-  out=$("$casteljau" "$@" 2>"$work/stderr")
-  status=$?
-  err=$(cat "$work/stderr")
-  if [[ $status -ne 0 || "$out" != "$expected" || -n "$err" ]]; then
-    echo "FAIL: $name: casteljau $*"
-    echo "  exit $status, stdout: $(printf '%q' "$out"), stderr: $err"
-    echo "  expected stdout: $(printf '%q' "$expected")"
-    failures=$((failures + 1))
-  fi
-}
+source "$(dirname "$0")/support/common.sh" "$@"
 
 # Seed 004's worked example: the notebook polygon gives B(0.5) = (2.25, 1.5).
 check "notebook B(0.5)" "2.25,1.5" eval "$examples/notebook_polygon.csv" --at 0.5
@@ -120,8 +99,4 @@ then
   failures=$((failures + 1))
 fi
 
-if [[ $failures -ne 0 ]]; then
-  echo "$failures failure(s)"
-  exit 1
-fi
-echo "eval known values: all passed"
+finish "eval known values"

@@ -2,12 +2,7 @@
 # casteljau eval -o FILE: writes exactly what stdout would get, prints nothing
 # on stdout; on error leaves no file (and an existing one untouched) and no
 # temporary file behind. Usage: bash eval_output_file.sh CASTELJAU EXAMPLES_DIR
-set -u
-casteljau=$1
-examples=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
+source "$(dirname "$0")/support/common.sh" "$@"
 polygon="$examples/notebook_polygon.csv"
 fail() {
   echo "FAIL: $*"
@@ -55,8 +50,4 @@ fi
 extra=$(ls -A "$work" | grep -v -x -e expected.csv -e out.csv -e stdout -e stderr -e ends.csv -e kept.csv)
 [[ -z "$extra" ]] && true || fail "left behind: $extra"
 
-if [[ $failures -ne 0 ]]; then
-  echo "$failures failure(s)"
-  exit 1
-fi
-echo "eval output file: all passed"
+finish "eval output file"

@@ -155,4 +155,12 @@ inline double largest_distance(const BSplineCurve& reference, const BSplineCurve
   return largest_distance(reference, other, [](double u) { return u; }, samples);
 }
 
+/// The cubic of The NURBS Book Example 5.1: U = {0,0,0,0,1,2,3,4,5,5,5,5}
+/// with eight control points of ours (the book leaves them symbolic).
+inline BSplineCurve book_example_5_1() {
+  return BSplineCurve::make(3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5},
+                            PointArray::make({{0, 0}, {1, 3}, {2.5, 4}, {4, 1}, {6, 2}, {7, 5}, {9, 4.5}, {10, 0}}).value())
+      .value();
+}
+
 }  // namespace casteljau::test
