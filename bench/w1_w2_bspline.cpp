@@ -23,6 +23,7 @@
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "support/splitmix.hpp"
 
 #if __has_include(<unsupported/Eigen/Splines>)
 #include <unsupported/Eigen/Splines>
@@ -54,16 +55,7 @@ constexpr double kScale = 100.0;
 /// Far above rounding (1e-13 of the scale), far below any wrong answer.
 constexpr double kRelativeBound = 1e-9;
 
-struct Random {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  double unit() { return static_cast<double>(next() >> 11) * 0x1p-53; }
-};
+using Random = casteljau::test::SplitMix;
 
 struct Data {
   std::vector<double> control;  // kControlPoints x 3

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "casteljau/bezier/evaluate.hpp"
+#include "support/splitmix.hpp"
 
 #if defined(CASTELJAU_HAVE_GMP)
 #include "support/exact.hpp"
@@ -55,19 +56,7 @@ constexpr double kScale = 100.0;              // control points in [0, 100)
 /// of the scale), far below any wrong answer.
 constexpr double kErrorBound = 1e-7;
 
-/// splitmix64: a fixed, portable stream (std distributions differ between
-/// standard libraries; this does not).
-struct Random {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  /// Uniform in [0, 1) with 53 random bits.
-  double unit() { return static_cast<double>(next() >> 11) * 0x1p-53; }
-};
+using Random = casteljau::test::SplitMix;
 
 /// One W3 configuration: its curve, its parameters, the output array shared
 /// by its rows, and the exact points at the subsample.

@@ -1,6 +1,7 @@
 #include "casteljau/bezier/bezier_curve.hpp"
 
 #include "casteljau/core/tolerance.hpp"
+#include "../core/homogeneous.hpp"
 #include "../core/weights.hpp"
 
 #include <cassert>
@@ -36,32 +37,12 @@ BezierCurve BezierCurve::from_trusted(PointArray control_points, std::vector<dou
 }
 
 PointArray homogeneous_points(const BezierCurve& curve) {
-  const int d = curve.dimension();
-  const auto& p = curve.control_points();
-  std::vector<double> h;
-  h.reserve(p.size() * (d + 1));
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double w = curve.is_rational() ? curve.weights()[i] : 1.0;
-    for (double c : p[i]) h.push_back(w * c);
-    h.push_back(w);
-  }
-  return PointArray::from_trusted(d + 1, std::move(h));
+  return detail::weighted_rows(curve.control_points(), curve.weights());
 }
 
 BezierCurve from_homogeneous(const PointArray& points) {
-  const int d = points.dimension() - 1;
-  assert(d >= 1);
-  std::vector<double> p, w;
-  p.reserve(points.size() * d);
-  w.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto row = points[i];
-    const double weight = row[d];
-    assert(weight > 0.0);
-    for (int j = 0; j < d; ++j) p.push_back(row[j] / weight);
-    w.push_back(weight);
-  }
-  return BezierCurve::from_trusted(PointArray::from_trusted(d, std::move(p)), std::move(w));
+  auto [p, w] = detail::projected_rows(points);
+  return BezierCurve::from_trusted(std::move(p), std::move(w));
 }
 
 }  // namespace casteljau

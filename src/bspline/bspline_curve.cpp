@@ -8,6 +8,7 @@
 #include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
+#include "../core/homogeneous.hpp"
 #include "../core/weights.hpp"
 
 namespace casteljau {
@@ -50,34 +51,12 @@ BSplineCurve BSplineCurve::from_trusted(int degree, std::vector<double> knots, P
 }
 
 PointArray homogeneous_points(const BSplineCurve& curve) {
-  const int d = curve.dimension();
-  const PointArray& p = curve.control_points();
-  std::vector<double> h;
-  h.reserve(p.size() * static_cast<std::size_t>(d + 1));
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double w = curve.is_rational() ? curve.weights()[i] : 1.0;
-    for (double c : p[i]) h.push_back(w * c);
-    h.push_back(w);
-  }
-  return PointArray::from_trusted(d + 1, std::move(h));
+  return detail::weighted_rows(curve.control_points(), curve.weights());
 }
 
 BSplineCurve from_homogeneous(int degree, std::vector<double> knots, const PointArray& points) {
-  const int d = points.dimension() - 1;
-  assert(d >= 1);
-  std::vector<double> p;
-  std::vector<double> w;
-  p.reserve(points.size() * static_cast<std::size_t>(d));
-  w.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto row = points[i];
-    const double weight = row[static_cast<std::size_t>(d)];
-    assert(weight > 0.0);
-    for (int j = 0; j < d; ++j) p.push_back(row[static_cast<std::size_t>(j)] / weight);
-    w.push_back(weight);
-  }
-  return BSplineCurve::from_trusted(degree, std::move(knots), PointArray::from_trusted(d, std::move(p)),
-                                    std::move(w));
+  auto [p, w] = detail::projected_rows(points);
+  return BSplineCurve::from_trusted(degree, std::move(knots), std::move(p), std::move(w));
 }
 
 BSplineCurve to_bspline(const BezierCurve& curve) {

@@ -3,6 +3,7 @@
 // issue 4), and figures that explain subdivision, flattening, degree
 // elevation and Bézier's vector form. The B-spline and NURBS figures are in
 // gallery_bspline.cpp and come last.
+#include "figure_list.hpp"
 #include "markup.hpp"
 #include "casteljau/render/gallery.hpp"
 
@@ -441,15 +442,11 @@ Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path
   figures.push_back(degree_200_figure(BezierCurve::from_trusted(notebook_cycle(kDegree)), comparison));
   figures.push_back(repeated_point_figure(*polygon, 2));
   const auto error = radial_error(semicircle->control_points(), 3.0, 20001);
-  auto semicircle_with_arc = semicircle_figure(*semicircle, error);
-  if (!semicircle_with_arc) return semicircle_with_arc.error();
-  figures.push_back(std::move(*semicircle_with_arc));
-  auto subdivision = subdivision_figure(*polygon);
-  if (!subdivision) return subdivision.error();
-  figures.push_back(std::move(*subdivision));
-  auto flattening = flattening_figure(*cycle8);
-  if (!flattening) return flattening.error();
-  figures.push_back(std::move(*flattening));
+  Expected<GalleryFigure> built[] = {semicircle_figure(*semicircle, error), subdivision_figure(*polygon),
+                                     flattening_figure(*cycle8)};
+  for (auto& figure : built) {
+    if (auto ok = detail::append_figure(figures, std::move(figure)); !ok) return ok.error();
+  }
   figures.push_back(elevation_figure(*polygon));
   figures.push_back(vector_form_figure(*semicircle, 0.4));
   figures.push_back(comb_figure(*cycle8, 8));

@@ -4,6 +4,7 @@
 // weight. Every curve goes through to_bezier_pieces and the certified
 // flattening (bspline_plots.hpp), like the Bézier figures.
 #include "casteljau/render/gallery.hpp"
+#include "figure_list.hpp"
 
 #include <fmt/format.h>
 
@@ -325,23 +326,11 @@ Expected<GalleryFigure> weight_figure() {
 
 Expected<std::vector<GalleryFigure>> bspline_gallery_figures() {
   std::vector<GalleryFigure> figures;
-  for (bool clamped : {true, false}) {
-    auto f = basis_figure(clamped);
-    if (!f) return f.error();
-    figures.push_back(std::move(*f));
+  Expected<GalleryFigure> built[] = {basis_figure(true), basis_figure(false), local_control_figure(),
+                                     continuity_figure(), circle_figure(), weight_figure()};
+  for (auto& figure : built) {
+    if (auto ok = detail::append_figure(figures, std::move(figure)); !ok) return ok.error();
   }
-  auto local = local_control_figure();
-  if (!local) return local.error();
-  figures.push_back(std::move(*local));
-  auto continuity = continuity_figure();
-  if (!continuity) return continuity.error();
-  figures.push_back(std::move(*continuity));
-  auto circle = circle_figure();
-  if (!circle) return circle.error();
-  figures.push_back(std::move(*circle));
-  auto weight = weight_figure();
-  if (!weight) return weight.error();
-  figures.push_back(std::move(*weight));
   return figures;
 }
 

@@ -22,22 +22,12 @@
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "../support/splitmix.hpp"
 
 namespace casteljau {
 namespace {
 
-/// splitmix64: a fixed, portable stream.
-struct Random {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  double unit() { return static_cast<double>(next() >> 11) * 0x1p-53; }
-  int below(int n) { return static_cast<int>(next() % static_cast<std::uint64_t>(n)); }
-};
+using Random = test::SplitMix;
 
 bool same_bits(double a, double b) {
   std::uint64_t x, y;
