@@ -32,6 +32,47 @@ std::string step_name(std::size_t i, std::size_t count, bool closed) {
   return "points " + std::to_string(i) + " and " + std::to_string(i + 1);
 }
 
+/// "coordinate k of point i is NaN" for the first non-finite coordinate.
+Status check_coordinates(const PointArray& points) {
+  for (std::size_t i = 0; i < points.coordinates().size(); ++i) {
+    const double value = points.coordinates()[i];
+    if (!std::isfinite(value)) {
+      const auto d = static_cast<std::size_t>(points.dimension());
+      return Error{"coordinate " + std::to_string(i % d) + " of point " + std::to_string(i / d) + " is " +
+                   (std::isnan(value) ? "NaN" : "infinite")};
+    }
+  }
+  return {};
+}
+
+/// The cumulative steps into parameters[1..], computed on coordinates
+/// divided by their scale (no overflow near 1e300, no underflow near
+/// 1e-300; the common factor cancels when the steps are normalized), after
+/// checking that every coordinate is finite and no step is zero.
+Status scaled_steps(const PointArray& points, Parameterization kind, bool closed, std::vector<double>& parameters) {
+  if (auto finite = check_coordinates(points); !finite) return finite.error();
+  const std::size_t count = points.size();
+  const std::size_t steps = closed ? count : count - 1;
+  const double scale = scale_of(points);
+  if (scale == 0.0) {
+    return Error{step_name(0, count, closed) + " coincide, " + std::string(name_of(kind)) +
+                 " parameters need distinct consecutive points"};
+  }
+  const double inverse_scale = 1.0 / scale;
+  double total = 0.0;
+  for (std::size_t i = 0; i < steps; ++i) {
+    const std::size_t next = (i + 1) % count;
+    const double length = scaled_distance(points[i], points[next], inverse_scale);
+    if (length == 0.0) {
+      return Error{step_name(i, count, closed) + " coincide, " + std::string(name_of(kind)) +
+                   " parameters need distinct consecutive points"};
+    }
+    total += kind == Parameterization::centripetal ? std::sqrt(length) : length;
+    parameters[i + 1] = total;
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string_view name_of(Parameterization kind) noexcept {
@@ -56,37 +97,36 @@ Expected<std::vector<double>> parameter_values(const PointArray& points, Paramet
   if (count < 2) {
     return Error{"interpolation needs at least 2 points, got " + std::to_string(count)};
   }
-  for (std::size_t i = 0; i < points.coordinates().size(); ++i) {
-    const double value = points.coordinates()[i];
-    if (!std::isfinite(value)) {
-      const auto d = static_cast<std::size_t>(points.dimension());
-      return Error{"coordinate " + std::to_string(i % d) + " of point " + std::to_string(i / d) + " is " +
-                   (std::isnan(value) ? "NaN" : "infinite")};
-    }
-  }
   const std::size_t steps = closed ? count : count - 1;
   std::vector<double> parameters(steps + 1, 0.0);
   if (kind == Parameterization::uniform) {
+    if (auto finite = check_coordinates(points); !finite) return finite.error();
     for (std::size_t i = 1; i < steps; ++i) parameters[i] = static_cast<double>(i) / static_cast<double>(steps);
     parameters[steps] = 1.0;
     return parameters;
   }
-  const double scale = scale_of(points);
-  if (scale == 0.0) {
-    return Error{step_name(0, count, closed) + " coincide, " + std::string(name_of(kind)) +
-                 " parameters need distinct consecutive points"};
-  }
-  const double inverse_scale = 1.0 / scale;
+  // One pass in the common case: plain squared distances, as long as each
+  // sum of squares is a normal number (neither zero, subnormal, infinite nor
+  // NaN). Coincident points, NaN, infinities and lengths beyond 1e±150 fall
+  // to the careful pass below, which checks, scales and names the culprit.
+  const std::size_t d = static_cast<std::size_t>(points.dimension());
+  const double* const coordinates = points.coordinates().data();
+  const bool centripetal = kind == Parameterization::centripetal;
   double total = 0.0;
-  for (std::size_t i = 0; i < steps; ++i) {
-    const std::size_t next = (i + 1) % count;
-    const double length = scaled_distance(points[i], points[next], inverse_scale);
-    if (length == 0.0) {
-      return Error{step_name(i, count, closed) + " coincide, " + std::string(name_of(kind)) +
-                   " parameters need distinct consecutive points"};
-    }
-    total += kind == Parameterization::centripetal ? std::sqrt(length) : length;
+  bool plain = true;
+  for (std::size_t i = 0; i < steps && plain; ++i) {
+    const double* const a = coordinates + i * d;
+    const double* const b = i + 1 == count ? coordinates : a + d;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < d; ++k) sum += (b[k] - a[k]) * (b[k] - a[k]);
+    plain = std::isnormal(sum);
+    const double length = std::sqrt(sum);
+    total += centripetal ? std::sqrt(length) : length;
     parameters[i + 1] = total;
+  }
+  if (!plain || !std::isfinite(total)) {
+    if (auto careful = scaled_steps(points, kind, closed, parameters); !careful) return careful.error();
+    total = parameters[steps];
   }
   for (std::size_t i = 1; i < steps; ++i) {
     parameters[i] /= total;

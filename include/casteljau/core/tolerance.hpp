@@ -92,6 +92,35 @@ inline constexpr double kContinuityRelative = 1e-9;
 /// a tangent computed to ~1e-14 can certify.
 inline constexpr double kTangentAngle = 1e-7;
 
+// --- Fitting (interpolation/fit.hpp) --------------------------------------------
+
+/// Smallest pivot D_i of the banded LDLᵀ factorization of a fit's normal
+/// equations, relative to the diagonal entry A_ii it came from, below which
+/// the system counts as singular (dimensionless). For a symmetric positive
+/// definite matrix D_i / A_ii >= 1 / cond(A); the rounding of D_i is about
+/// (p+1) ulps of A_ii, so a ratio under 1e-13 (500 ulps) cannot be told
+/// from zero: the data do not determine the control points (too few
+/// parameters in some knot span, λ = 0 with more control points than points).
+inline constexpr double kFitSingularPivot = 1e-13;
+
+/// The range of λ that GCV searches, in decades around the scale
+/// λ₀ = tr(BᵀB) / tr(Ω) where data term and penalty weigh alike: from
+/// λ₀ 10^-10 (the fit all but interpolates: 1 − tr H/(m+1) is at the level
+/// of rounding and GCV is noise) to λ₀ 10^6 (the fit is the least-squares
+/// straight line to within 1e-6 of the data's scale).
+inline constexpr double kGcvSearchDecadesBelow = 10.0;
+inline constexpr double kGcvSearchDecadesAbove = 6.0;
+
+/// Step of the GCV grid over log10 λ, in decades: 4 values per decade find
+/// the basin of the minimum (GCV changes smoothly over a fraction of a decade
+/// and its minima are broad); golden-section search then refines within it.
+inline constexpr double kGcvGridStepDecades = 0.25;
+
+/// Width of the final golden-section bracket of log10 λ, in decades: 1e-6
+/// decades is a relative change of 2.3e-6 in λ, far below any visible change
+/// of the curve, and a few dozen GCV evaluations from the grid's bracket.
+inline constexpr double kGcvRefinementDecades = 1e-6;
+
 // --- Size limits for untrusted input -----------------------------------------
 // "Huge sizes" are refused with a clear error instead of exhausting memory or
 // running for hours.
@@ -128,12 +157,37 @@ inline constexpr std::size_t kMaxInputValues = 50'000'000;
 /// per 2D point: 10^7 points stay under 1 GB.
 inline constexpr std::size_t kMaxEvaluationParameters = 10'000'000;
 
+/// Highest degree of a Lagrange (barycentric) interpolant, and so at most
+/// kMaxLagrangeDegree + 1 nodes (interpolate_lagrange, chebyshev_parameters).
+/// The weights cost O(n^2) operations: 10^8 at this bound, a fraction of a
+/// second; evaluation is O(n) per point. On Chebyshev nodes the barycentric
+/// form stays accurate at this degree (Berrut & Trefethen 2004 §7).
+inline constexpr int kMaxLagrangeDegree = 10'000;
+
+/// Highest degree of a Lagrange interpolant converted to a Bézier curve
+/// (to_bezier in interpolation/lagrange.hpp). The conversion solves a
+/// Bernstein-Vandermonde system whose condition number grows like 2^n;
+/// measured on Runge's function, the Bézier curve misses the interpolant by
+/// 3e-11 (n = 30) and 5e-9 (n = 40) of its size on Chebyshev nodes, 4e-10
+/// and 3e-7 on equispaced ones (tests/interpolation/lagrange_test.cpp),
+/// about 100x more per 10 degrees. Above 40 the Bézier form would no longer
+/// represent the polynomial to single-precision accuracy: refused.
+inline constexpr int kMaxLagrangeBezierDegree = 40;
+
 /// Highest derivative order the front ends accept. A polynomial curve's
 /// derivatives of order > n vanish, and n!/(n-k)! overflows a double once
 /// k > 170 for any n, so larger orders only make sense as zeros; rational
 /// derivatives cost O(k^2) per point (NURBS Book A4.2). 1000 keeps every
 /// request cheap.
 inline constexpr int kMaxDerivativeOrder = 1000;
+
+/// Highest order q accepted by interpolate_natural (degree 2q - 1). The
+/// natural end conditions are derivatives of orders q..2q-2 at the ends,
+/// whose basis values grow like (2q-1)!/(q-1)! / h^j; past q = 8 (degree 15,
+/// derivatives up to order 14) the collocation system loses most of double
+/// precision on ordinary data, and no use of natural splines needs more
+/// (q = 2, 3 are the common ones). Dimensionless.
+inline constexpr int kMaxNaturalSplineOrder = 8;
 
 /// Largest input file read, in bytes (1 GiB). Every text format casteljau
 /// reads is parsed in memory, and a model or point set of the largest
