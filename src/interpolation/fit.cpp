@@ -1,0 +1,686 @@
+// B-spline approximation of point sets: least squares (The NURBS Book
+// §9.4.1), smoothing with a second-derivative penalty and GCV (Craven & Wahba
+// 1979; Hutchinson & de Hoog 1985 for the trace), and refinement to a
+// tolerance. See interpolation/fit.hpp.
+//
+// All three share one linear problem (FitSystem): the design rows N_j(t_k),
+// the banded Gram matrix G = BᵀB over the free control points, the right side
+// Bᵀ P̃ and the penalty Ω = (∫ N_j'' N_k''). For a given λ the normal
+// equations (G + λ Ω) Q = Bᵀ P̃ − λ K are factored once and solved for the d
+// coordinates together.
+
+#include "casteljau/interpolation/fit.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "casteljau/bspline/basis.hpp"
+#include "casteljau/bspline/evaluate.hpp"
+#include "../core/number_text.hpp"
+#include "fit_banded.hpp"
+
+namespace casteljau {
+
+namespace {
+
+using detail::number_text;
+using detail::SymmetricBand;
+
+constexpr double kNotANumber = std::numeric_limits<double>::quiet_NaN();
+
+// --- input checks ------------------------------------------------------------------
+
+/// Checks what every fit needs: matching counts, finite coordinates and
+/// parameters, strictly increasing parameters, a degree in range and at
+/// least p+1 points.
+Status check_fit_input(const PointArray& points, std::span<const double> parameters, int degree) {
+  if (points.empty()) return Error{"a fit needs points, got none"};
+  if (parameters.size() != points.size()) {
+    return Error{"a fit needs one parameter per point: " + std::to_string(parameters.size()) +
+                 " parameters for " + std::to_string(points.size()) + " points"};
+  }
+  if (degree < 1 || degree > tolerances::kMaxBSplineDegree) {
+    return Error{"degree " + std::to_string(degree) + " is outside 1.." +
+                 std::to_string(tolerances::kMaxBSplineDegree)};
+  }
+  const int d = points.dimension();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int c = 0; c < d; ++c) {
+      if (auto finite = check_finite(points[i][static_cast<std::size_t>(c)],
+                                     "coordinate " + std::to_string(c) + " of point " + std::to_string(i));
+          !finite) {
+        return finite.error();
+      }
+    }
+  }
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    if (auto finite = check_finite(parameters[i], "parameter " + std::to_string(i)); !finite) return finite.error();
+    if (i > 0 && !(parameters[i] > parameters[i - 1])) {
+      return Error{"parameters must increase strictly: parameter " + std::to_string(i) + " (" +
+                   number_text(parameters[i]) + ") is not above parameter " + std::to_string(i - 1) + " (" +
+                   number_text(parameters[i - 1]) + ")"};
+    }
+  }
+  const std::size_t needed = static_cast<std::size_t>(degree) + 1;
+  if (points.size() < needed) {
+    return Error{"a fit of degree " + std::to_string(degree) + " needs at least " + std::to_string(needed) +
+                 " points, got " + std::to_string(points.size())};
+  }
+  return {};
+}
+
+/// Checks n+1 control points of degree p against m+1 points.
+Status check_control_point_count(std::size_t count, int degree, std::size_t point_count) {
+  const std::size_t needed = static_cast<std::size_t>(degree) + 1;
+  if (count < needed) {
+    return Error{"a fit of degree " + std::to_string(degree) + " needs at least " + std::to_string(needed) +
+                 " control points, got " + std::to_string(count)};
+  }
+  if (count > point_count) {
+    return Error{std::to_string(count) + " control points for " + std::to_string(point_count) +
+                 " points: a least-squares fit takes at most as many control points as points"};
+  }
+  return {};
+}
+
+// --- knots -------------------------------------------------------------------------
+
+/// p+1 copies of t_0, the interior knots, p+1 copies of t_m.
+std::vector<double> clamped_knots(std::span<const double> parameters, int degree,
+                                  std::span<const double> interior) {
+  std::vector<double> knots;
+  knots.reserve(interior.size() + 2 * static_cast<std::size_t>(degree) + 2);
+  knots.insert(knots.end(), static_cast<std::size_t>(degree) + 1, parameters.front());
+  knots.insert(knots.end(), interior.begin(), interior.end());
+  knots.insert(knots.end(), static_cast<std::size_t>(degree) + 1, parameters.back());
+  return knots;
+}
+
+/// N_i(t) != 0 for a clamped knot vector of degree p >= 1: the open support
+/// (U_i, U_{i+p+1}), plus t_0 for N_0 and t_m for N_n (where they are 1).
+bool left_of_support(std::span<const double> knots, std::size_t i, double t) {
+  return !(i == 0 && t == knots.front()) && t <= knots[i];
+}
+bool right_of_support(std::span<const double> knots, int degree, std::size_t i, double t) {
+  const std::size_t n = knots.size() - static_cast<std::size_t>(degree) - 2;
+  return !(i == n && t == knots.back()) && t >= knots[i + static_cast<std::size_t>(degree) + 1];
+}
+
+/// The Schoenberg–Whitney condition of the fit's free columns and rows:
+/// increasing rows k_j with N_j(t_{k_j}) != 0 for every free column j
+/// (then BᵀB is positive definite; Schoenberg & Whitney 1953, de Boor, A
+/// Practical Guide to Splines, ch. XIII). The supports' ends increase with
+/// j, so taking the first usable row for each column in turn finds such
+/// rows whenever they exist. O(m + n).
+bool schoenberg_whitney(std::span<const double> knots, int degree, std::span<const double> parameters,
+                        FitEnds ends) {
+  const std::size_t n = knots.size() - static_cast<std::size_t>(degree) - 2;
+  const bool clamp = ends == FitEnds::interpolated;
+  if (clamp && n < 2) return true;  // Q_0 and Q_n fixed, nothing free
+  const std::size_t first = clamp ? 1 : 0, last = clamp ? n - 1 : n;  // free columns [first, last]
+  std::size_t row = clamp ? 1 : 0;
+  const std::size_t end_row = clamp ? parameters.size() - 1 : parameters.size();
+  for (std::size_t j = first; j <= last; ++j) {
+    while (row < end_row && left_of_support(knots, j, parameters[row])) ++row;
+    if (row >= end_row || right_of_support(knots, degree, j, parameters[row])) return false;
+    ++row;
+  }
+  return true;
+}
+
+// --- Gauss–Legendre ------------------------------------------------------------------
+
+/// Nodes and weights of the q-point Gauss–Legendre rule on [-1, 1] (exact for
+/// polynomials of degree 2q − 1), by Newton's method on P_q from the
+/// asymptotic guesses cos(π (i + 3/4) / (q + 1/2)) (Abramowitz & Stegun 22.16;
+/// Numerical Recipes' gauleg). Converges to rounding in a few steps.
+void gauss_legendre(int count, std::vector<double>& nodes, std::vector<double>& weights) {
+  nodes.assign(static_cast<std::size_t>(count), 0.0);
+  weights.assign(static_cast<std::size_t>(count), 0.0);
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < (count + 1) / 2; ++i) {
+    double x = std::cos(pi * (i + 0.75) / (count + 0.5));
+    double derivative = 1.0;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      double p0 = 1.0, p1 = 0.0;  // P_j(x), P_{j-1}(x) by Bonnet's recursion
+      for (int j = 1; j <= count; ++j) {
+        const double p2 = p1;
+        p1 = p0;
+        p0 = ((2.0 * j - 1.0) * x * p1 - (j - 1.0) * p2) / j;
+      }
+      derivative = count * (x * p0 - p1) / (x * x - 1.0);
+      const double step = p0 / derivative;
+      x -= step;
+      if (std::abs(step) <= 4e-16) break;
+    }
+    const double weight = 2.0 / ((1.0 - x * x) * derivative * derivative);
+    const auto low = static_cast<std::size_t>(i), high = static_cast<std::size_t>(count - 1 - i);
+    nodes[low] = -x;
+    nodes[high] = x;
+    weights[low] = weight;
+    weights[high] = weight;
+  }
+  if (count % 2 == 1) nodes[static_cast<std::size_t>(count / 2)] = 0.0;  // exact middle node
+}
+
+/// Ω_jk = ∫_{t_0}^{t_m} N_j''(u) N_k''(u) du over all n+1 basis functions:
+/// per non-empty knot span, the p−1 point Gauss–Legendre rule, exact since
+/// N_j'' N_k'' is a polynomial of degree 2p − 4 there. O(n p³).
+SymmetricBand penalty_matrix(std::span<const double> knots, int degree) {
+  const auto p = static_cast<std::size_t>(degree);
+  const std::size_t count = knots.size() - p - 1;
+  SymmetricBand omega(count, degree);
+  std::vector<double> nodes, weights;
+  gauss_legendre(std::max(degree - 1, 1), nodes, weights);
+  std::vector<double> derivatives(3 * (p + 1));
+  for (std::size_t span = p; span < count; ++span) {
+    const double a = knots[span], b = knots[span + 1];
+    if (!(a < b)) continue;
+    const double half = 0.5 * (b - a), middle = 0.5 * (a + b);
+    for (std::size_t g = 0; g < nodes.size(); ++g) {
+      basis_function_derivatives(knots, degree, static_cast<int>(span), middle + half * nodes[g], 2, derivatives);
+      const double* second = derivatives.data() + 2 * (p + 1);
+      const double w = half * weights[g];
+      for (std::size_t r = 0; r <= p; ++r) {
+        for (std::size_t s = 0; s <= r; ++s) omega.at(span - p + r, span - p + s) += w * second[r] * second[s];
+      }
+    }
+  }
+  return omega;
+}
+
+// --- the linear problem ------------------------------------------------------------
+
+/// One solve at a given λ: the control points and what GCV needs.
+struct Solution {
+  PointArray control_points;
+  double residual_sum = 0.0;  ///< Σ ‖C(t_k) − P_k‖² from the design rows
+  double trace = 0.0;         ///< tr H
+};
+
+/// The least-squares / smoothing problem on fixed knots (see the file comment).
+/// Interpolated ends fix Q_0 = P_0 and Q_n = P_m, leave the free columns
+/// 1..n−1 and the rows 1..m−1 with P̃_k = P_k − N_0(t_k) P_0 − N_n(t_k) P_m
+/// (The NURBS Book eq. 9.63–9.67); free ends leave every column and row.
+class FitSystem {
+ public:
+  FitSystem(const PointArray& points, std::span<const double> parameters, int degree, std::vector<double> knots,
+            FitEnds ends, bool with_penalty)
+      : points_(points), degree_(degree), knots_(std::move(knots)),
+        count_(knots_.size() - static_cast<std::size_t>(degree) - 1), clamp_(ends == FitEnds::interpolated),
+        first_row_(clamp_ ? 1 : 0), end_row_(clamp_ ? points.size() - 1 : points.size()),
+        first_column_(clamp_ ? 1 : 0), free_count_(clamp_ ? count_ - 2 : count_),
+        gram_(free_count_, degree), right_side_(free_count_ * static_cast<std::size_t>(points.dimension()), 0.0),
+        penalty_(0, degree) {
+    const auto p = static_cast<std::size_t>(degree);
+    const auto d = static_cast<std::size_t>(points.dimension());
+    const std::size_t rows = end_row_ - first_row_;
+    spans_.resize(rows);
+    basis_.resize(rows * (p + 1));
+    targets_.resize(rows * d);
+    for (std::size_t k = first_row_; k < end_row_; ++k) {
+      const std::size_t row = k - first_row_;
+      const int span = find_span(knots_, degree, parameters[k]);
+      spans_[row] = static_cast<std::size_t>(span);
+      const std::span<double> values(basis_.data() + row * (p + 1), p + 1);
+      basis_functions(knots_, degree, span, parameters[k], values);
+      double* target = targets_.data() + row * d;
+      for (std::size_t c = 0; c < d; ++c) target[c] = points[k][c];
+      if (clamp_) {  // P̃_k: the fixed end control points' share moved to the data side
+        const std::size_t column0 = spans_[row] - p;
+        for (std::size_t r = 0; r <= p; ++r) {
+          const std::size_t column = column0 + r;
+          if (column == 0 || column == count_ - 1) {
+            const auto fixed = column == 0 ? points[0] : points[points.size() - 1];
+            for (std::size_t c = 0; c < d; ++c) target[c] -= values[r] * fixed[c];
+          }
+        }
+      }
+      accumulate_row(row);
+    }
+    if (with_penalty) {
+      penalty_ = penalty_matrix(knots_, degree);
+      free_penalty_ = SymmetricBand(free_count_, degree);
+      coupling_.assign(free_count_ * d, 0.0);
+      for (std::size_t i = 0; i < free_count_; ++i) {
+        const std::size_t column = i + first_column_;
+        for (std::size_t j = free_penalty_.first_column(i); j <= i; ++j) {
+          free_penalty_.at(i, j) = penalty_.at(column, j + first_column_);
+        }
+      }
+      if (clamp_) {  // K = Ω_{free,0} P_0 + Ω_{free,n} P_m
+        for (std::size_t i = 0; i < free_count_; ++i) {
+          const std::size_t column = i + 1;
+          for (std::size_t c = 0; c < d; ++c) {
+            double sum = 0.0;
+            if (column <= p) sum += penalty_.at(column, 0) * points[0][c];
+            if (count_ - 1 - column <= p) sum += penalty_.at(count_ - 1, column) * points[points.size() - 1][c];
+            coupling_[i * d + c] = sum;
+          }
+        }
+      }
+    }
+  }
+
+  std::span<const double> knots() const noexcept { return knots_; }
+  std::size_t control_point_count() const noexcept { return count_; }
+  std::size_t free_count() const noexcept { return free_count_; }
+
+  /// λ₀ = tr G / tr Ω over the free columns: where data and penalty weigh alike.
+  double smoothing_scale() const noexcept {
+    const double g = gram_.trace(), omega = free_penalty_.trace();
+    return g > 0.0 && omega > 0.0 ? g / omega : 1.0;
+  }
+
+  /// The fit at λ (0: plain least squares); nothing when the normal
+  /// equations are singular. `with_trace`: also tr H by the band of the
+  /// inverse (for λ = 0 it is the number of control points exactly).
+  std::optional<Solution> solve(double lambda, bool with_trace) const {
+    const auto d = static_cast<std::size_t>(points_.dimension());
+    SymmetricBand matrix = gram_;
+    std::vector<double> rhs = right_side_;
+    if (lambda > 0.0) {
+      matrix.add_scaled(free_penalty_, lambda);
+      for (std::size_t k = 0; k < coupling_.size(); ++k) rhs[k] -= lambda * coupling_[k];
+    }
+    if (!matrix.factor()) return std::nullopt;
+    matrix.solve(rhs, d);
+
+    Solution solution;
+    std::vector<double> all(count_ * d);
+    if (clamp_) {
+      std::copy(points_[0].begin(), points_[0].end(), all.begin());
+      std::copy(points_[points_.size() - 1].begin(), points_[points_.size() - 1].end(),
+                all.begin() + static_cast<std::ptrdiff_t>((count_ - 1) * d));
+    }
+    std::copy(rhs.begin(), rhs.end(), all.begin() + static_cast<std::ptrdiff_t>(first_column_ * d));
+    solution.control_points = PointArray::from_trusted(points_.dimension(), std::move(all));
+    solution.residual_sum = residual_sum(solution.control_points);
+    const std::size_t fixed = count_ - free_count_;
+    if (lambda == 0.0) {
+      solution.trace = static_cast<double>(count_);
+    } else if (with_trace) {
+      solution.trace = static_cast<double>(fixed) + matrix.inverse_band().trace_of_product(gram_);
+    } else {
+      solution.trace = kNotANumber;
+    }
+    return solution;
+  }
+
+ private:
+  /// Adds row `row` of the design to G and Bᵀ P̃ (free columns only).
+  void accumulate_row(std::size_t row) {
+    const auto p = static_cast<std::size_t>(degree_);
+    const auto d = static_cast<std::size_t>(points_.dimension());
+    const double* values = basis_.data() + row * (p + 1);
+    const double* target = targets_.data() + row * d;
+    const std::size_t column0 = spans_[row] - p;
+    for (std::size_t r = 0; r <= p; ++r) {
+      const std::size_t a = column0 + r;
+      if (a < first_column_ || a >= first_column_ + free_count_) continue;
+      const std::size_t i = a - first_column_;
+      for (std::size_t c = 0; c < d; ++c) right_side_[i * d + c] += values[r] * target[c];
+      for (std::size_t s = 0; s <= r; ++s) {
+        const std::size_t b = column0 + s;
+        if (b < first_column_) continue;
+        gram_.at(i, b - first_column_) += values[r] * values[s];
+      }
+    }
+  }
+
+  /// Σ_k ‖P̃_k − Σ_free N_j(t_k) Q_j‖² (rows 0 and m of interpolated ends are exact).
+  double residual_sum(const PointArray& control_points) const {
+    const auto p = static_cast<std::size_t>(degree_);
+    const auto d = static_cast<std::size_t>(points_.dimension());
+    double sum = 0.0;
+    std::vector<double> fitted(d);
+    for (std::size_t row = 0; row < spans_.size(); ++row) {
+      const double* values = basis_.data() + row * (p + 1);
+      std::fill(fitted.begin(), fitted.end(), 0.0);
+      const std::size_t column0 = spans_[row] - p;
+      for (std::size_t r = 0; r <= p; ++r) {
+        const std::size_t a = column0 + r;
+        if (a < first_column_ || a >= first_column_ + free_count_) continue;
+        for (std::size_t c = 0; c < d; ++c) fitted[c] += values[r] * control_points[a][c];
+      }
+      for (std::size_t c = 0; c < d; ++c) {
+        const double r = targets_[row * d + c] - fitted[c];
+        sum += r * r;
+      }
+    }
+    return sum;
+  }
+
+  const PointArray& points_;
+  int degree_;
+  std::vector<double> knots_;
+  std::size_t count_;         // n+1 control points
+  bool clamp_;
+  std::size_t first_row_, end_row_;
+  std::size_t first_column_, free_count_;
+  std::vector<std::size_t> spans_;
+  std::vector<double> basis_;    // rows x (p+1)
+  std::vector<double> targets_;  // rows x d: P̃_k
+  SymmetricBand gram_;
+  std::vector<double> right_side_;
+  SymmetricBand penalty_;               // Ω over all columns
+  SymmetricBand free_penalty_{0, 1};    // Ω over the free columns
+  std::vector<double> coupling_;        // K (interpolated ends)
+};
+
+/// GCV(λ) from a solution: (RSS / N) / (1 − tr H / N)², NaN when tr H >= N.
+double gcv_score(double residual_sum, double trace, std::size_t point_count) {
+  const double n = static_cast<double>(point_count);
+  const double denominator = 1.0 - trace / n;
+  if (!(denominator > 0.0)) return kNotANumber;
+  return residual_sum / n / (denominator * denominator);
+}
+
+/// The BSplineFit of a solution: the curve, its errors at the parameters
+/// (evaluated on the curve itself, not from the design rows), λ and GCV.
+BSplineFit make_result(const FitSystem& system, Solution solution, const PointArray& points,
+                       std::span<const double> parameters, int degree, double lambda) {
+  BSplineCurve curve = BSplineCurve::from_trusted(degree, std::vector<double>(system.knots().begin(), system.knots().end()),
+                                                  std::move(solution.control_points));
+  const auto d = static_cast<std::size_t>(points.dimension());
+  std::vector<double> fitted(points.size() * d);
+  points_at(curve, parameters, fitted);
+  std::vector<double> errors(points.size());
+  double max_error = 0.0, sum = 0.0;
+  std::size_t worst = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    errors[i] = distance(points[i], std::span<const double>(fitted.data() + i * d, d));
+    sum += errors[i] * errors[i];
+    if (errors[i] > max_error) {
+      max_error = errors[i];
+      worst = i;
+    }
+  }
+  const double rms = std::sqrt(sum / static_cast<double>(points.size()));
+  const double trace = solution.trace;
+  return BSplineFit{std::move(curve), std::move(errors), max_error, worst, rms, lambda, trace,
+                    gcv_score(sum, trace, points.size()), false};
+}
+
+Error singular_error(std::size_t control_points, double lambda) {
+  std::string message = "the fit's normal equations are singular with " + std::to_string(control_points) +
+                        " control points";
+  if (lambda > 0.0) message += " and λ = " + number_text(lambda);
+  return Error{message + ": the data do not determine the control points"};
+}
+
+// --- GCV search ----------------------------------------------------------------------
+
+/// GCV at λ = λ₀ 10^x, +∞ where the system is singular or GCV undefined.
+double gcv_at(const FitSystem& system, double scale, double x, std::size_t point_count) {
+  const auto solution = system.solve(scale * std::pow(10.0, x), true);
+  if (!solution) return std::numeric_limits<double>::infinity();
+  const double score = gcv_score(solution->residual_sum, solution->trace, point_count);
+  return std::isnan(score) ? std::numeric_limits<double>::infinity() : score;
+}
+
+/// The λ minimizing GCV: the best point of a grid over log10 λ, then
+/// golden-section search in the bracket of its two neighbours. Nothing when
+/// GCV is undefined at every grid point.
+std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_count) {
+  const double scale = system.smoothing_scale();
+  const double step = tolerances::kGcvGridStepDecades;
+  const double low = -tolerances::kGcvSearchDecadesBelow;
+  const int steps = static_cast<int>(std::lround((tolerances::kGcvSearchDecadesAbove + tolerances::kGcvSearchDecadesBelow) / step));
+  double best_x = 0.0, best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= steps; ++i) {
+    const double x = low + i * step;
+    const double score = gcv_at(system, scale, x, point_count);
+    if (score < best) {
+      best = score;
+      best_x = x;
+    }
+  }
+  if (!std::isfinite(best)) return std::nullopt;
+  // Golden section on [best_x − step, best_x + step] (Kiefer 1953): the
+  // bracket shrinks by 0.618 per evaluation; a minimum on the grid's edge
+  // stays inside the searched range.
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = std::max(best_x - step, low), b = std::min(best_x + step, tolerances::kGcvSearchDecadesAbove);
+  double c = b - ratio * (b - a), e = a + ratio * (b - a);
+  double fc = gcv_at(system, scale, c, point_count), fe = gcv_at(system, scale, e, point_count);
+  while (b - a > tolerances::kGcvRefinementDecades) {
+    if (fc <= fe) {
+      b = e;
+      e = c;
+      fe = fc;
+      c = b - ratio * (b - a);
+      fc = gcv_at(system, scale, c, point_count);
+    } else {
+      a = c;
+      c = e;
+      fc = fe;
+      e = a + ratio * (b - a);
+      fe = gcv_at(system, scale, e, point_count);
+    }
+  }
+  double x = best_x;
+  if (std::min(fc, fe) < best) x = fc <= fe ? c : e;
+  return scale * std::pow(10.0, x);
+}
+
+}  // namespace
+
+std::vector<double> approximation_knots(std::span<const double> parameters, int degree,
+                                        std::size_t control_point_count) {
+  const auto p = static_cast<std::size_t>(degree);
+  assert(degree >= 1 && control_point_count >= p + 1 && control_point_count <= parameters.size());
+  const std::size_t n = control_point_count - 1, m = parameters.size() - 1;
+  const std::size_t pieces = n - p + 1;  // n − p + 1 knot spans
+  std::vector<double> interior;
+  interior.reserve(n - p);
+  for (std::size_t j = 1; j <= n - p; ++j) {
+    // j d = j (m+1) / (n−p+1) in integers, so i and α are exact (eq. 9.69).
+    const std::size_t numerator = j * (m + 1);
+    const std::size_t i = numerator / pieces;
+    const double alpha = static_cast<double>(numerator % pieces) / static_cast<double>(pieces);
+    interior.push_back((1.0 - alpha) * parameters[i - 1] + alpha * parameters[i]);
+  }
+  return clamped_knots(parameters, degree, interior);
+}
+
+Expected<BSplineFit> fit_least_squares(const PointArray& points, std::span<const double> parameters, int degree,
+                                       std::size_t control_point_count, FitEnds ends) {
+  if (auto valid = check_fit_input(points, parameters, degree); !valid) return valid.error();
+  if (auto valid = check_control_point_count(control_point_count, degree, points.size()); !valid) {
+    return valid.error();
+  }
+  const FitSystem system(points, parameters, degree, approximation_knots(parameters, degree, control_point_count),
+                         ends, false);
+  auto solution = system.solve(0.0, false);
+  if (!solution) return singular_error(control_point_count, 0.0);
+  return make_result(system, std::move(*solution), points, parameters, degree, 0.0);
+}
+
+Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const double> parameters,
+                                   const SmoothingOptions& options) {
+  const int degree = options.degree;
+  if (auto valid = check_fit_input(points, parameters, degree); !valid) return valid.error();
+  if (degree < 2) {
+    return Error{"smoothing needs degree 2 or more (the penalty integrates C''), got degree " +
+                 std::to_string(degree)};
+  }
+  if (options.smoothing) {
+    const double lambda = *options.smoothing;
+    if (auto finite = check_finite(lambda, "the smoothing λ"); !finite) return finite.error();
+    if (lambda < 0.0) return Error{"the smoothing λ is " + number_text(lambda) + ", it must be >= 0"};
+  }
+  std::vector<double> knots;
+  if (options.control_point_count == 0) {
+    // A simple knot at every interior parameter: m + p control points.
+    knots = clamped_knots(parameters, degree, parameters.subspan(1, parameters.size() - 2));
+  } else {
+    if (auto valid = check_control_point_count(options.control_point_count, degree, points.size()); !valid) {
+      return valid.error();
+    }
+    knots = approximation_knots(parameters, degree, options.control_point_count);
+  }
+  const FitSystem system(points, parameters, degree, std::move(knots), options.ends, true);
+  const std::size_t count = system.control_point_count();
+  double lambda = 0.0;
+  bool from_gcv = false;
+  if (options.smoothing) {
+    lambda = *options.smoothing;
+    if (lambda == 0.0 && count > points.size()) {
+      return Error{"the smoothing λ = 0 leaves " + std::to_string(count) + " control points (knots at every "
+                   "parameter) for " + std::to_string(points.size()) +
+                   " points: give λ > 0 or fewer control points"};
+    }
+  } else {
+    const auto chosen = gcv_smoothing(system, points.size());
+    if (!chosen) return Error{"GCV cannot choose λ: the fit's normal equations are singular for every λ tried"};
+    lambda = *chosen;
+    from_gcv = true;
+  }
+  auto solution = system.solve(lambda, true);
+  if (!solution) return singular_error(count, lambda);
+  BSplineFit fit = make_result(system, std::move(*solution), points, parameters, degree, lambda);
+  fit.smoothing_from_gcv = from_gcv;
+  return fit;
+}
+
+Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const double> parameters, int degree,
+                                      Tolerance tolerance, FitEnds ends) {
+  if (auto valid = check_fit_input(points, parameters, degree); !valid) return valid.error();
+  if (auto finite = check_finite(tolerance.distance, "the tolerance"); !finite) return finite.error();
+  if (!(tolerance.distance > 0.0)) {
+    return Error{"the tolerance is " + number_text(tolerance.distance) + ", it must be > 0"};
+  }
+  struct Span {
+    std::size_t first, end;  // its points: t_first .. t_{end-1}
+    double lower, upper;     // its knots
+    double worst;            // largest error of its points
+  };
+  struct Candidate {
+    double error;
+    double knot;
+  };
+  std::vector<double> interior;  // interior knots, increasing
+  std::vector<double> fallback;  // the last round's knots with only its worst new knot
+  std::optional<BSplineFit> previous;
+  const auto not_reached = [&](const BSplineFit& fit, const char* why) {
+    return Error{"the tolerance " + number_text(tolerance.distance) + " is not reached: max error " +
+                 number_text(fit.max_error) + " at point " + std::to_string(fit.worst_point) + " with " +
+                 std::to_string(fit.curve.control_points().size()) + " control points (" + why + ")"};
+  };
+  while (true) {
+    const FitSystem system(points, parameters, degree, clamped_knots(parameters, degree, interior), ends, false);
+    const std::size_t count = system.control_point_count();
+    auto solution = system.solve(0.0, false);
+    if (!solution) {
+      // Schoenberg–Whitney holds, so only rounding makes the system singular:
+      // the knots crowd the points too closely for double precision.
+      if (!previous) return singular_error(count, 0.0);
+      if (!fallback.empty()) {  // the last round added several knots: add only its worst one
+        interior = std::move(fallback);
+        fallback.clear();
+        continue;
+      }
+      return not_reached(*previous, "more control points make the normal equations singular in double precision");
+    }
+    BSplineFit fit = make_result(system, std::move(*solution), points, parameters, degree, 0.0);
+    if (fit.max_error <= tolerance.distance) return fit;
+
+    // The knot spans with their points (a point at a knot belongs to the span on its right).
+    std::vector<Span> spans;
+    const std::span<const double> knots = system.knots();
+    std::size_t first = 0;
+    for (std::size_t s = static_cast<std::size_t>(degree); s < count; ++s) {
+      const double upper = knots[s + 1];
+      if (!(knots[s] < upper)) continue;
+      std::size_t end = first;  // points with t < upper (all remaining in the last span)
+      while (end < points.size() && (parameters[end] < upper || s + 1 == count)) ++end;
+      double worst = 0.0;
+      for (std::size_t i = first; i < end; ++i) worst = std::max(worst, fit.errors[i]);
+      spans.push_back({first, end, knots[s], upper, worst});
+      first = end;
+    }
+    // For each span whose worst error exceeds the tolerance, a knot in the
+    // nearest span with two points or more (itself first): at the middle of
+    // its points, or, in a neighbour, between its two points nearest to the
+    // offending span, so the new freedom lands where the error is. Every span
+    // keeps a point, which (with p+1 <= n+1 <= m+1) is the Schoenberg–Whitney
+    // condition for clamped knots; it is still checked below.
+    std::vector<Candidate> candidates;
+    for (std::size_t s = 0; s < spans.size(); ++s) {
+      if (!(spans[s].worst > tolerance.distance)) continue;
+      for (std::size_t reach = 0; reach < spans.size(); ++reach) {
+        std::optional<double> knot;
+        for (int side : {0, -1, 1}) {
+          if ((reach == 0) != (side == 0)) continue;
+          if (side < 0 && reach > s) continue;
+          const std::size_t other = side < 0 ? s - reach : s + reach;
+          if (other >= spans.size()) continue;
+          const Span& span = spans[other];
+          if (span.end - span.first < 2) continue;
+          const std::size_t split = side == 0 ? span.first + (span.end - span.first) / 2
+                                    : side < 0 ? span.end - 1
+                                               : span.first + 1;
+          const double value = 0.5 * (parameters[split - 1] + parameters[split]);
+          if (span.lower < value && value < span.upper) {
+            knot = value;
+            break;
+          }
+        }
+        if (knot) {
+          candidates.push_back({spans[s].worst, *knot});
+          break;
+        }
+      }
+    }
+    // Worst first; one knot per value.
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.error > b.error; });
+    std::vector<Candidate> unique;
+    for (const Candidate& candidate : candidates) {
+      const bool seen = std::any_of(unique.begin(), unique.end(),
+                                    [&](const Candidate& other) { return other.knot == candidate.knot; });
+      if (!seen) unique.push_back(candidate);
+    }
+    const std::size_t room = points.size() - count;  // control points may grow up to the point count
+    if (unique.size() > room) unique.resize(room);
+
+    auto with_knots = [&](std::span<const Candidate> chosen) {
+      std::vector<double> more = interior;
+      for (const Candidate& candidate : chosen) more.push_back(candidate.knot);
+      std::sort(more.begin(), more.end());
+      return more;
+    };
+    std::vector<double> next;
+    if (!unique.empty()) {
+      next = with_knots(unique);
+      if (!schoenberg_whitney(clamped_knots(parameters, degree, next), degree, parameters, ends)) {
+        next.clear();
+        for (const Candidate& candidate : unique) {  // one knot at a time, worst first
+          std::vector<double> single = with_knots(std::span<const Candidate>(&candidate, 1));
+          if (schoenberg_whitney(clamped_knots(parameters, degree, single), degree, parameters, ends)) {
+            next = std::move(single);
+            break;
+          }
+        }
+      }
+    }
+    if (next.empty()) {
+      return not_reached(fit, room == 0 ? "the limit: as many control points as points"
+                                        : "no knot can be added");
+    }
+    fallback.clear();
+    if (next.size() > interior.size() + 1) fallback = with_knots(std::span<const Candidate>(unique.data(), 1));
+    interior = std::move(next);
+    previous = std::move(fit);
+  }
+}
+
+}  // namespace casteljau

@@ -1,0 +1,514 @@
+// B-spline fitting (interpolation/fit.hpp). References:
+// - exact rational arithmetic (GMP): the normal equations of least squares and
+//   of smoothing built from the Cox–de Boor recursion in rationals
+//   (tests/support/exact_basis.hpp), the penalty ∫ N_j'' N_k'' by Milne's rule
+//   (exact for the quadratic integrands of a cubic), solved by exact Gaussian
+//   elimination; the trace of the hat matrix from the exact inverse;
+// - The NURBS Book eq. 9.68–9.69 worked by hand for the knots;
+// - Eigen's dense LDLᵀ and inverse for the banded factorization;
+// - facts that hold whatever the algorithm: polynomial data of degree <= p are
+//   reproduced, the tolerance is met (checked with point_at), a huge λ leaves
+//   the least-squares line, the GCV choice is a minimum of GCV.
+// scipy cross-checks run through the CLI in tests/python/test_fit_scipy.py.
+
+#include "casteljau/interpolation/fit.hpp"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "../../src/interpolation/fit_banded.hpp"
+#include "casteljau/bspline/evaluate.hpp"
+#include "support/exact_basis.hpp"
+#include "support/splitmix.hpp"
+
+namespace casteljau {
+namespace {
+
+using test::exact_basis;
+using test::exact_basis_derivative;
+using RationalMatrix = std::vector<std::vector<mpq_class>>;
+
+PointArray points_of(int dimension, std::vector<double> coordinates) {
+  return PointArray::make(dimension, std::move(coordinates)).value();
+}
+
+template <class T>
+std::string error_of(const Expected<T>& result) {
+  return result ? std::string("no error") : result.error().message;
+}
+
+/// Solves A X = B exactly (A square and invertible) by Gaussian elimination.
+RationalMatrix solve_exactly(RationalMatrix a, RationalMatrix b) {
+  const std::size_t n = a.size();
+  for (std::size_t col = 0; col < n; ++col) {
+    std::size_t pivot = col;
+    while (a[pivot][col] == 0) ++pivot;
+    std::swap(a[pivot], a[col]);
+    std::swap(b[pivot], b[col]);
+    for (std::size_t row = 0; row < n; ++row) {
+      if (row == col || a[row][col] == 0) continue;
+      const mpq_class factor = a[row][col] / a[col][col];
+      for (std::size_t k = col; k < n; ++k) a[row][k] -= factor * a[col][k];
+      for (std::size_t k = 0; k < b[row].size(); ++k) b[row][k] -= factor * b[col][k];
+    }
+  }
+  for (std::size_t row = 0; row < n; ++row)
+    for (auto& value : b[row]) value /= a[row][row];
+  return b;
+}
+
+/// ∫_a^b N_j'' N_k'' exactly for degree 3: on each knot span the integrand is
+/// quadratic and Milne's rule (b − a)/3 (2 f(a+h/4) − f(a+h/2) + 2 f(a+3h/4))
+/// is exact for cubics. The quarter points must be exact doubles (dyadic knots).
+RationalMatrix exact_penalty(std::span<const double> knots, int p) {
+  const std::size_t count = knots.size() - static_cast<std::size_t>(p) - 1;
+  RationalMatrix omega(count, std::vector<mpq_class>(count, 0));
+  for (std::size_t s = 0; s + 1 < knots.size(); ++s) {
+    const double a = knots[s], b = knots[s + 1];
+    if (!(a < b)) continue;
+    const double h = b - a;
+    const double nodes[3] = {a + h / 4, a + h / 2, a + 3 * h / 4};
+    const mpq_class weights[3] = {2, -1, 2};
+    for (int g = 0; g < 3; ++g) {
+      EXPECT_EQ(mpq_class(nodes[g]), mpq_class(a) + mpq_class(h) * mpq_class(g + 1, 4)) << "nodes not exact";
+      std::vector<mpq_class> second(count);
+      for (std::size_t j = 0; j < count; ++j) second[j] = exact_basis_derivative(knots, static_cast<int>(j), p, 2, nodes[g]);
+      for (std::size_t j = 0; j < count; ++j)
+        for (std::size_t k = 0; k < count; ++k) omega[j][k] += mpq_class(h) / 3 * weights[g] * second[j] * second[k];
+    }
+  }
+  return omega;
+}
+
+/// The exact solution of the (penalized) least-squares problem on `knots`:
+/// control points and tr H. Interpolated ends: Q_0 = P_0, Q_n = P_m, the
+/// other rows and columns as in The NURBS Book eq. 9.63–9.67.
+struct ExactFit {
+  RationalMatrix control_points;  // n+1 rows of d
+  mpq_class trace;
+};
+ExactFit exact_fit(const PointArray& points, std::span<const double> t, std::span<const double> knots, int p,
+                   FitEnds ends, const mpq_class& lambda, bool penalty) {
+  const std::size_t count = knots.size() - static_cast<std::size_t>(p) - 1, d = points.dimension();
+  const bool clamp = ends == FitEnds::interpolated;
+  const std::size_t first_row = clamp ? 1 : 0, end_row = clamp ? points.size() - 1 : points.size();
+  const std::size_t first = clamp ? 1 : 0, free = clamp ? count - 2 : count;
+  RationalMatrix basis(points.size(), std::vector<mpq_class>(count));
+  for (std::size_t k = 0; k < points.size(); ++k)
+    for (std::size_t j = 0; j < count; ++j) basis[k][j] = exact_basis(knots, static_cast<int>(j), p, t[k]);
+  RationalMatrix omega = penalty ? exact_penalty(knots, p) : RationalMatrix(count, std::vector<mpq_class>(count, 0));
+  RationalMatrix fixed(count, std::vector<mpq_class>(d, 0));  // Q_0, Q_n when clamped
+  if (clamp) {
+    for (std::size_t c = 0; c < d; ++c) {
+      fixed[0][c] = points[0][c];
+      fixed[count - 1][c] = points[points.size() - 1][c];
+    }
+  }
+  RationalMatrix a(free, std::vector<mpq_class>(free, 0)), gram = a, rhs(free, std::vector<mpq_class>(d, 0));
+  for (std::size_t k = first_row; k < end_row; ++k) {
+    std::vector<mpq_class> target(d);
+    for (std::size_t c = 0; c < d; ++c) {
+      target[c] = points[k][c];
+      for (std::size_t j = 0; j < count; ++j) target[c] -= basis[k][j] * fixed[j][c];
+    }
+    for (std::size_t i = 0; i < free; ++i) {
+      for (std::size_t c = 0; c < d; ++c) rhs[i][c] += basis[k][i + first] * target[c];
+      for (std::size_t j = 0; j < free; ++j) gram[i][j] += basis[k][i + first] * basis[k][j + first];
+    }
+  }
+  for (std::size_t i = 0; i < free; ++i) {
+    for (std::size_t j = 0; j < free; ++j) a[i][j] = gram[i][j] + lambda * omega[i + first][j + first];
+    for (std::size_t c = 0; c < d; ++c)
+      for (std::size_t j = 0; j < count; ++j) rhs[i][c] -= lambda * omega[i + first][j] * fixed[j][c];
+  }
+  const RationalMatrix interior = solve_exactly(a, rhs);
+  const RationalMatrix inverse_times_gram = solve_exactly(a, gram);
+  ExactFit fit{fixed, clamp ? mpq_class(2) : mpq_class(0)};
+  for (std::size_t i = 0; i < free; ++i) {
+    fit.control_points[i + first] = interior[i];
+    fit.trace += inverse_times_gram[i][i];
+  }
+  return fit;
+}
+
+double largest_error(const PointArray& computed, const RationalMatrix& exact) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < computed.size(); ++i)
+    for (std::size_t c = 0; c < exact[i].size(); ++c)
+      worst = std::max(worst, std::abs(mpq_class(mpq_class(computed[i][c]) - exact[i][c]).get_d()));
+  return worst;
+}
+
+/// 12 points with dyadic coordinates and dyadic, unevenly spaced parameters.
+const std::vector<double> kParameters{0, 0.0625, 0.125, 0.25, 0.3125, 0.375, 0.5, 0.625, 0.6875, 0.75, 0.875, 1};
+PointArray dyadic_points() {
+  return points_of(2, {0, 0, 1, 2.5, 2, 3, 3.5, 2.75, 4, 1, 5, 0.5, 6.25, 1.5, 7, 3, 7.5, 4.25, 8, 4, 9, 2, 10, 0.25});
+}
+
+// --- knots -------------------------------------------------------------------------
+
+TEST(ApproximationKnots, FollowTheNurbsBookEquation) {
+  // m + 1 = 10 parameters i/10, p = 3, n + 1 = 6: d = 10/3; j = 1: i = 3, α = 1/3,
+  // u_4 = (2/3) t_2 + (1/3) t_3 = 7/30; j = 2: i = 6, α = 2/3, u_5 = (1/3) t_5 + (2/3) t_6 = 17/30.
+  std::vector<double> t;
+  for (int i = 0; i < 10; ++i) t.push_back(i / 10.0);
+  const auto knots = approximation_knots(t, 3, 6);
+  ASSERT_EQ(knots.size(), 10u);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(knots[i], 0.0);
+    EXPECT_EQ(knots[6 + i], 0.9);
+  }
+  EXPECT_NEAR(knots[4], 7.0 / 30.0, 1e-16);
+  EXPECT_NEAR(knots[5], 17.0 / 30.0, 1e-16);
+}
+
+// --- least squares: exact reference ------------------------------------------------
+
+TEST(FitLeastSquares, EqualsTheExactNormalEquations) {
+  const PointArray points = dyadic_points();
+  for (int p : {1, 2, 3, 4}) {
+    for (std::size_t count : {std::size_t(p + 1), std::size_t(7), std::size_t(12)}) {
+      for (FitEnds ends : {FitEnds::interpolated, FitEnds::free}) {
+        SCOPED_TRACE("p = " + std::to_string(p) + ", " + std::to_string(count) + " control points, " +
+                     (ends == FitEnds::free ? "free ends" : "interpolated ends"));
+        const auto fit = fit_least_squares(points, kParameters, p, count, ends);
+        ASSERT_TRUE(fit) << error_of(fit);
+        const auto knots = approximation_knots(kParameters, p, count);
+        EXPECT_EQ(std::vector<double>(fit->curve.knots().begin(), fit->curve.knots().end()), knots);
+        const ExactFit exact = exact_fit(points, kParameters, knots, p, ends, 0, false);
+        // The normal equations square B's condition; n = m on eq. 9.69 knots is the worst case here.
+        EXPECT_LE(largest_error(fit->curve.control_points(), exact.control_points), 1e-10 * 10);
+        EXPECT_EQ(fit->effective_degrees_of_freedom, static_cast<double>(count));
+        EXPECT_EQ(fit->smoothing, 0.0);
+        if (count == points.size()) {
+          EXPECT_LE(fit->max_error, 1e-11 * 10);  // n = m interpolates (normal equations: cond²)
+        }
+        if (ends == FitEnds::interpolated) {
+          EXPECT_EQ(fit->errors.front(), 0.0);
+          EXPECT_EQ(fit->errors.back(), 0.0);
+        }
+      }
+    }
+  }
+}
+
+TEST(FitLeastSquares, ReportsTheErrorsOfTheCurve) {
+  const PointArray points = dyadic_points();
+  const auto fit = fit_least_squares(points, kParameters, 3, 6, FitEnds::free);
+  ASSERT_TRUE(fit);
+  ASSERT_EQ(fit->errors.size(), points.size());
+  double worst = 0.0, sum = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double e = distance(point_at(fit->curve, kParameters[i]), points[i]);
+    EXPECT_NEAR(fit->errors[i], e, 1e-14 * 10);
+    worst = std::max(worst, e);
+    sum += e * e;
+  }
+  EXPECT_NEAR(fit->max_error, worst, 1e-14 * 10);
+  EXPECT_EQ(fit->errors[fit->worst_point], fit->max_error);
+  EXPECT_NEAR(fit->rms_error, std::sqrt(sum / 12), 1e-14 * 10);
+  // GCV of plain least squares: (RSS/N) / (1 − (n+1)/N)².
+  EXPECT_NEAR(fit->gcv_score, sum / 12 / std::pow(1 - 6.0 / 12, 2), 1e-12 * fit->gcv_score);
+}
+
+/// Random polynomial data of degree q <= p at jittered increasing parameters:
+/// least squares reproduces them to rounding, whatever n and the ends.
+RC_GTEST_PROP(FitLeastSquares, ReproducesPolynomialsOfDegreeAtMostP, ()) {
+  const int p = *rc::gen::inRange(1, 6);
+  const int q = *rc::gen::inRange(0, p + 1);
+  const int count = *rc::gen::inRange(p + 1, 40);
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  test::SplitMix random{seed};
+  std::vector<double> t(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) t[static_cast<std::size_t>(i)] = (i + 0.8 * random.unit()) / count;
+  std::vector<double> coefficients(2 * static_cast<std::size_t>(q + 1));
+  for (double& c : coefficients) c = 20 * random.unit() - 10;
+  std::vector<double> coordinates;
+  for (double u : t) {
+    for (int c = 0; c < 2; ++c) {
+      double value = 0.0;  // Horner, centred at 1/2 so the values stay O(10)
+      for (int k = q; k >= 0; --k) value = value * (u - 0.5) + coefficients[2 * static_cast<std::size_t>(k) + c];
+      coordinates.push_back(value);
+    }
+  }
+  const PointArray points = points_of(2, coordinates);
+  const auto control_points = static_cast<std::size_t>(*rc::gen::inRange(p + 1, count + 1));
+  const FitEnds ends = *rc::gen::element(FitEnds::interpolated, FitEnds::free);
+  const auto fit = fit_least_squares(points, t, p, control_points, ends);
+  RC_ASSERT(fit.has_value());
+  RC_ASSERT(fit->max_error <= 1e-9 * std::max(1.0, scale_of(points)));
+}
+
+// --- smoothing: exact reference -----------------------------------------------------
+
+TEST(FitSmoothing, EqualsTheExactPenalizedSystem) {
+  const PointArray points = dyadic_points();
+  for (FitEnds ends : {FitEnds::free, FitEnds::interpolated}) {
+    for (double lambda : {0.0009765625, 0.015625, 2.0}) {
+      SCOPED_TRACE("λ = " + std::to_string(lambda) + (ends == FitEnds::free ? ", free ends" : ", interpolated ends"));
+      SmoothingOptions options;
+      options.smoothing = lambda;
+      options.ends = ends;
+      const auto fit = fit_smoothing(points, kParameters, options);
+      ASSERT_TRUE(fit) << error_of(fit);
+      // Knots at every parameter: t_0⁴, t_1..t_10, t_11⁴, so m + p = 14 control points.
+      std::vector<double> knots{0, 0, 0};
+      knots.insert(knots.end(), kParameters.begin(), kParameters.end());
+      knots.insert(knots.end(), {1, 1, 1});
+      ASSERT_EQ(std::vector<double>(fit->curve.knots().begin(), fit->curve.knots().end()), knots);
+      const ExactFit exact = exact_fit(points, kParameters, knots, 3, ends, mpq_class(lambda), true);
+      EXPECT_LE(largest_error(fit->curve.control_points(), exact.control_points), 1e-10 * 10);
+      EXPECT_NEAR(fit->effective_degrees_of_freedom, exact.trace.get_d(), 1e-11 * 12);
+      EXPECT_EQ(fit->smoothing, lambda);
+      EXPECT_FALSE(fit->smoothing_from_gcv);
+      double sum = 0.0;
+      for (double e : fit->errors) sum += e * e;
+      const double n = 12.0, denominator = 1 - exact.trace.get_d() / n;
+      EXPECT_NEAR(fit->gcv_score, sum / n / (denominator * denominator), 1e-9 * fit->gcv_score);
+    }
+  }
+}
+
+TEST(FitSmoothing, PenalizedFitWithFixedControlPointCountEqualsExactSystem) {
+  // 9 parameters and 6 control points: d = 9/3 = 3 is a whole number, so the
+  // interior knots of eq. 9.69 are parameters (t_2, t_5) and dyadic.
+  const std::vector<double> t{0, 0.125, 0.25, 0.375, 0.4375, 0.5, 0.625, 0.75, 1};
+  const PointArray points = points_of(1, {1, 3, 2, -1, 0.5, 4, 2, 2.5, -2});
+  const auto knots = approximation_knots(t, 3, 6);
+  ASSERT_EQ(knots, (std::vector<double>{0, 0, 0, 0, 0.25, 0.5, 1, 1, 1, 1}));
+  for (FitEnds ends : {FitEnds::free, FitEnds::interpolated}) {
+    SmoothingOptions options;
+    options.control_point_count = 6;
+    options.smoothing = 0.0078125;
+    options.ends = ends;
+    const auto fit = fit_smoothing(points, t, options);
+    ASSERT_TRUE(fit) << error_of(fit);
+    const ExactFit exact = exact_fit(points, t, knots, 3, ends, mpq_class(0.0078125), true);
+    EXPECT_LE(largest_error(fit->curve.control_points(), exact.control_points), 1e-11 * 4);
+    EXPECT_NEAR(fit->effective_degrees_of_freedom, exact.trace.get_d(), 1e-11 * 9);
+  }
+}
+
+/// GCV(λ) of the fit at a given λ.
+double gcv_at(const PointArray& points, std::span<const double> t, double lambda) {
+  SmoothingOptions options;
+  options.smoothing = lambda;
+  return fit_smoothing(points, t, options).value().gcv_score;
+}
+
+PointArray noisy_sine(std::size_t count, std::uint64_t seed, std::vector<double>& t) {
+  test::SplitMix random{seed};
+  std::vector<double> coordinates;
+  t.clear();
+  for (std::size_t i = 0; i < count; ++i) {
+    const double x = static_cast<double>(i) / static_cast<double>(count - 1);
+    t.push_back(x);
+    coordinates.push_back(std::sin(6 * x) + 0.2 * (random.unit() - 0.5));
+  }
+  return points_of(1, coordinates);
+}
+
+TEST(FitSmoothing, GcvChoiceMinimizesGcv) {
+  std::vector<double> t;
+  const PointArray points = noisy_sine(80, 7, t);
+  const auto fit = fit_smoothing(points, t, SmoothingOptions{});
+  ASSERT_TRUE(fit) << error_of(fit);
+  EXPECT_TRUE(fit->smoothing_from_gcv);
+  const double lambda = fit->smoothing;
+  EXPECT_GT(lambda, 0.0);
+  // A minimum: GCV does not fall a step away in either direction, and the
+  // reported score is GCV at the reported λ.
+  EXPECT_NEAR(fit->gcv_score, gcv_at(points, t, lambda), 1e-12 * fit->gcv_score);
+  for (double factor : {1.01, 1.1, 2.0, 10.0}) {
+    EXPECT_LE(fit->gcv_score, gcv_at(points, t, lambda * factor) * (1 + 1e-12)) << factor;
+    EXPECT_LE(fit->gcv_score, gcv_at(points, t, lambda / factor) * (1 + 1e-12)) << factor;
+  }
+  // Noise of standard deviation 0.2/sqrt(12) ≈ 0.058: the smoothed residuals are of that size,
+  // and the fit uses far fewer degrees of freedom than the 80 points.
+  EXPECT_GT(fit->rms_error, 0.03);
+  EXPECT_LT(fit->rms_error, 0.08);
+  EXPECT_GT(fit->effective_degrees_of_freedom, 4.0);
+  EXPECT_LT(fit->effective_degrees_of_freedom, 30.0);
+}
+
+TEST(FitSmoothing, EffectiveDegreesOfFreedomFallWithLambdaTowardsALine) {
+  std::vector<double> t;
+  const PointArray points = noisy_sine(40, 3, t);
+  double previous = 1e300;
+  for (double lambda : {1e-8, 1e-6, 1e-4, 1e-2, 1.0, 100.0}) {
+    SmoothingOptions options;
+    options.smoothing = lambda;
+    const auto fit = fit_smoothing(points, t, options);
+    ASSERT_TRUE(fit) << error_of(fit);
+    EXPECT_LT(fit->effective_degrees_of_freedom, previous);
+    EXPECT_GT(fit->effective_degrees_of_freedom, 2.0);
+    previous = fit->effective_degrees_of_freedom;
+  }
+  // λ = 1e5 (10^5 times the data's weight here): the penalty leaves almost only lines,
+  // so the fit is the least-squares line y = a + b t (closed form from the two sums).
+  SmoothingOptions options;
+  options.smoothing = 1e5;
+  const auto fit = fit_smoothing(points, t, options);
+  ASSERT_TRUE(fit);
+  double st = 0, sy = 0, stt = 0, sty = 0;
+  const double n = 40;
+  for (std::size_t i = 0; i < 40; ++i) {
+    st += t[i];
+    sy += points[i][0];
+    stt += t[i] * t[i];
+    sty += t[i] * points[i][0];
+  }
+  const double b = (n * sty - st * sy) / (n * stt - st * st), a = (sy - b * st) / n;
+  for (double u : {0.0, 0.3, 1.0}) EXPECT_NEAR(point_at(fit->curve, u)[0], a + b * u, 1e-4);
+  EXPECT_NEAR(fit->effective_degrees_of_freedom, 2.0, 1e-3);
+}
+
+// --- tolerance ---------------------------------------------------------------------
+
+RC_GTEST_PROP(FitToTolerance, MeetsTheTolerance, ()) {
+  const int p = *rc::gen::inRange(1, 5);
+  const double relative = std::pow(10.0, -*rc::gen::inRange(1, 7));
+  const FitEnds ends = *rc::gen::element(FitEnds::interpolated, FitEnds::free);
+  const std::size_t count = 300;
+  std::vector<double> coordinates, t;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double s = static_cast<double>(i) / (count - 1);
+    t.push_back(s);
+    coordinates.push_back(3 * std::cos(4 * s) + std::cos(17 * s));
+    coordinates.push_back(2 * std::sin(5 * s));
+  }
+  const PointArray points = points_of(2, coordinates);
+  const double tolerance = relative * scale_of(points);
+  const auto fit = fit_to_tolerance(points, t, p, Tolerance{tolerance}, ends);
+  RC_ASSERT(fit.has_value());
+  for (std::size_t i = 0; i < count; ++i) RC_ASSERT(distance(point_at(fit->curve, t[i]), points[i]) <= tolerance);
+  RC_ASSERT(fit->max_error <= tolerance);
+  RC_ASSERT(fit->curve.control_points().size() < count);
+  RC_ASSERT(fit->curve.degree() == p);
+}
+
+TEST(FitToTolerance, UsesFewControlPointsForSmoothData) {
+  // A cubic's data need one Bézier piece: no knot is added.
+  std::vector<double> t, coordinates;
+  for (int i = 0; i <= 50; ++i) {
+    const double s = i / 50.0;
+    t.push_back(s);
+    coordinates.push_back(s * s * s - 2 * s);
+  }
+  const auto fit = fit_to_tolerance(points_of(1, coordinates), t, 3, Tolerance{1e-9});
+  ASSERT_TRUE(fit) << error_of(fit);
+  EXPECT_EQ(fit->curve.control_points().size(), 4u);
+}
+
+TEST(FitToTolerance, RefusesATolerancePastRounding) {
+  std::vector<double> t;
+  const PointArray points = noisy_sine(30, 1, t);
+  const auto fit = fit_to_tolerance(points, t, 3, Tolerance{1e-300});
+  ASSERT_FALSE(fit);
+  EXPECT_NE(error_of(fit).find("the tolerance 1e-300 is not reached: max error "), std::string::npos) << error_of(fit);
+}
+
+// --- the banded factorization ------------------------------------------------------
+
+TEST(SymmetricBand, SolvesAndInvertsLikeDenseLdlt) {
+  test::SplitMix random{42};
+  for (int p = 1; p <= 5; ++p) {
+    for (std::size_t n : {std::size_t(1), std::size_t(2), std::size_t(7), std::size_t(30)}) {
+      detail::SymmetricBand band(n, p);
+      Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+      for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = band.first_column(i); j <= i; ++j) {
+          const double value = i == j ? 2.0 * p + 1 + random.unit() : random.unit() - 0.5;  // diagonally dominant
+          band.at(i, j) = value;
+          dense(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = value;
+          dense(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) = value;
+        }
+      }
+      const detail::SymmetricBand original = band;
+      ASSERT_TRUE(band.factor());
+      Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(static_cast<Eigen::Index>(n), 3);
+      std::vector<double> x(n * 3);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t c = 0; c < 3; ++c) x[i * 3 + c] = rhs(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c));
+      band.solve(x, 3);
+      const Eigen::MatrixXd expected = dense.ldlt().solve(rhs);
+      const Eigen::MatrixXd inverse = dense.inverse();
+      const detail::SymmetricBand z = band.inverse_band();
+      for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t c = 0; c < 3; ++c) {
+          EXPECT_NEAR(x[i * 3 + c], expected(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)), 1e-13);
+        }
+        for (std::size_t j = z.first_column(i); j <= i; ++j) {
+          EXPECT_NEAR(z.at(i, j), inverse(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)), 1e-13);
+        }
+      }
+      // tr(A⁻¹ A) = n from the band alone.
+      EXPECT_NEAR(z.trace_of_product(original), static_cast<double>(n), 1e-12 * static_cast<double>(n));
+    }
+  }
+}
+
+TEST(SymmetricBand, RefusesASingularMatrix) {
+  detail::SymmetricBand band(3, 1);  // [[1,1,0],[1,1,0],[0,0,1]]
+  band.at(0, 0) = 1;
+  band.at(1, 0) = 1;
+  band.at(1, 1) = 1;
+  band.at(2, 2) = 1;
+  EXPECT_FALSE(band.factor());
+}
+
+// --- bad input ---------------------------------------------------------------------
+
+TEST(Fit, RefusesBadInputWithOneClearMessage) {
+  const PointArray points = dyadic_points();
+  const std::vector<double> t = kParameters;
+  EXPECT_EQ(error_of(fit_least_squares(points_of(2, {0, 0, 1, 1, 2, 0}), std::vector<double>{0, 0.5, 1}, 3, 4)),
+            "a fit of degree 3 needs at least 4 points, got 3");
+  EXPECT_EQ(error_of(fit_least_squares(points, t, 3, 3)), "a fit of degree 3 needs at least 4 control points, got 3");
+  EXPECT_EQ(error_of(fit_least_squares(points, t, 3, 13)),
+            "13 control points for 12 points: a least-squares fit takes at most as many control points as points");
+  EXPECT_EQ(error_of(fit_least_squares(points, std::span<const double>(t).first(11), 3, 5)),
+            "a fit needs one parameter per point: 11 parameters for 12 points");
+  EXPECT_EQ(error_of(fit_least_squares(points, t, 0, 5)), "degree 0 is outside 1..10000");
+  std::vector<double> repeated = t;
+  repeated[4] = repeated[3];
+  EXPECT_EQ(error_of(fit_least_squares(points, repeated, 3, 5)),
+            "parameters must increase strictly: parameter 4 (0.25) is not above parameter 3 (0.25)");
+  std::vector<double> nan_parameter = t;
+  nan_parameter[2] = std::nan("");
+  EXPECT_EQ(error_of(fit_least_squares(points, nan_parameter, 3, 5)), "parameter 2 is NaN");
+  PointArray nan_point = points;
+  nan_point[5][1] = std::nan("");
+  EXPECT_EQ(error_of(fit_least_squares(nan_point, t, 3, 5)), "coordinate 1 of point 5 is NaN");
+
+  SmoothingOptions negative;
+  negative.smoothing = -1.0;
+  EXPECT_EQ(error_of(fit_smoothing(points, t, negative)), "the smoothing λ is -1, it must be >= 0");
+  SmoothingOptions linear;
+  linear.degree = 1;
+  EXPECT_EQ(error_of(fit_smoothing(points, t, linear)),
+            "smoothing needs degree 2 or more (the penalty integrates C''), got degree 1");
+  SmoothingOptions zero;
+  zero.smoothing = 0.0;
+  EXPECT_EQ(error_of(fit_smoothing(points, t, zero)),
+            "the smoothing λ = 0 leaves 14 control points (knots at every parameter) for 12 points: give λ > 0 or "
+            "fewer control points");
+  zero.control_point_count = 8;  // then λ = 0 is plain least squares
+  const auto plain = fit_smoothing(points, t, zero);
+  ASSERT_TRUE(plain) << error_of(plain);
+  EXPECT_EQ(plain->curve, fit_least_squares(points, t, 3, 8, FitEnds::free)->curve);
+
+  EXPECT_EQ(error_of(fit_to_tolerance(points, t, 3, Tolerance{0.0})), "the tolerance is 0, it must be > 0");
+  EXPECT_EQ(error_of(fit_to_tolerance(points, t, 3, Tolerance{-1.0})), "the tolerance is -1, it must be > 0");
+  EXPECT_EQ(error_of(fit_to_tolerance(points, t, 3, Tolerance{std::nan("")})), "the tolerance is NaN");
+}
+
+}  // namespace
+}  // namespace casteljau
