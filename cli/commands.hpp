@@ -16,6 +16,8 @@ void add_plot_command(CLI::App& app, int& status);       // cli/plot_command.cpp
 void add_bernstein_command(CLI::App& app, int& status);  // cli/bernstein_command.cpp
 void add_gallery_command(CLI::App& app, int& status);    // cli/gallery_command.cpp
 void add_convert_command(CLI::App& app, int& status);    // cli/convert_command.cpp
+void add_interpolate_command(CLI::App& app, int& status);  // cli/interpolate_command.cpp
+void add_fit_command(CLI::App& app, int& status);          // cli/fit_command.cpp
 
 /// Prints "casteljau: error: <message>" on stderr and returns 2 (bad input).
 int fail(std::string_view message);

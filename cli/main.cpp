@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   add_bernstein_command(app, status);
   add_gallery_command(app, status);
   add_convert_command(app, status);
+  add_interpolate_command(app, status);
+  add_fit_command(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -453,6 +453,9 @@ Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path
   auto bspline = bspline_gallery_figures();
   if (!bspline) return bspline.error();
   for (auto& f : *bspline) figures.push_back(std::move(f));
+  auto interpolation = interpolation_gallery_figures(examples_dir);
+  if (!interpolation) return interpolation.error();
+  for (auto& f : *interpolation) figures.push_back(std::move(f));
   return figures;
 }
 

@@ -32,6 +32,10 @@ for svg in "$work"/gallery/*.svg; do
   check "$(basename "$name").png is PNG" '[ "$(head -c 8 "$name.png" | od -An -tx1 | tr -d " \n")" = "89504e470d0a1a0a" ]'
   check "$(basename "$svg") is linked from index.html" 'grep -q "src=\"$(basename "$svg")\"" "$work/gallery/index.html"'
 done
+# The interpolation figures of issue 3 (23 to 29), each with a caption.
+for name in 23_head_interpolants 24_car_interpolants 25_runge 26_natural_splines 27_smoothing 28_head_methods 29_car_methods; do
+  check "figure $name is in the gallery" '[ -s "$work/gallery/$name.svg" ] && grep -q "<figure id=\"$name\">" "$work/gallery/index.html"'
+done
 # No temporary files left behind.
 check "no temporary files" '[ -z "$(find "$work/gallery" -name ".*tmp*")" ]'
 
@@ -53,6 +57,6 @@ check "missing examples exits 2 (got $status)" '[ "$status" -eq 2 ]'
 check "missing examples: one line naming notebook_polygon.csv" '[ "$(wc -l <"$work/err3")" -eq 1 ] && grep -q "notebook_polygon.csv" "$work/err3"'
 check "missing examples: no gallery files" '[ -z "$(ls -A "$work/g2" 2>/dev/null)" ]'
 
-checks=$((count + 5 * $(ls "$work"/gallery/*.svg | wc -l) + 9))
+checks=$((count + 5 * $(ls "$work"/gallery/*.svg | wc -l) + 16))
 echo "$((checks - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

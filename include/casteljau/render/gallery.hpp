@@ -60,6 +60,13 @@ RadialError radial_error(const BSplineCurve& curve, double radius, int samples);
 /// pull of one weight (22). gallery_figures() lists them last.
 Expected<std::vector<GalleryFigure>> bspline_gallery_figures();
 
+/// The gallery's interpolation figures (issue 3; 23 to 29): the head and the
+/// car through c1-bezier at α = 1, 2 and the closed C² cubic, Runge's
+/// oscillation, natural splines q = 1..3, smoothing with increasing λ, and
+/// every method side by side on each data set. Errors: a missing or
+/// malformed head.csv or car.csv in `examples_dir` (named).
+Expected<std::vector<GalleryFigure>> interpolation_gallery_figures(const std::filesystem::path& examples_dir);
+
 /// Every gallery figure, built from the CSV files in `examples_dir`.
 /// Errors: a missing or malformed seed file (named).
 Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path& examples_dir);
