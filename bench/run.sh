@@ -7,8 +7,9 @@
 # Exits non-zero if a binary fails or a row reported an error (a benchmark
 # whose output check failed calls SkipWithError).
 #
-# W1/W2 rows of scipy come from bench/w1_scipy.py (run by /usr/bin/python3,
-# pinned the same way) when Debian's scipy is installed.
+# W1/W2 rows of scipy come from bench/w1_scipy.py and W4 rows from
+# bench/w4_scipy.py (run by /usr/bin/python3, pinned the same way) when
+# Debian's scipy is installed.
 #
 # Environment: CASTELJAU_BENCH_DIR (default build-bench/bench),
 # CASTELJAU_BENCH_CPU (default 0), CASTELJAU_BENCH_OUT (default out/bench),
@@ -78,6 +79,9 @@ for name, row in sorted(rows.items(), key=lambda item: item[1]["order"]):
     values = [r["items_per_second"] / 1e6 for r in row["reps"] if "items_per_second" in r]
     if len(values) > 1:
         spread = " [%.1f-%.1f]" % (min(values), max(values))
+    elif "items_per_second" not in med and len(row["reps"]) > 1:  # time per fit (W4)
+        times = [r["real_time"] for r in row["reps"]]
+        spread = " [%.3f-%.3f]" % (min(times), max(times))
     counters = " ".join("%s=%.3g" % (k, v) for k, v in med.items()
                         if k not in skip and isinstance(v, (int, float)))
     print("   %-*s %s%s %s" % (width, name, rate(med), spread, counters))
@@ -117,6 +121,20 @@ if [[ "W1/sorted/scipy-BSpline W1/random/scipy-BSpline W2/sorted/scipy-BSpline" 
     summarize "$json" || status=1
   else
     echo "   w1_scipy.py failed (see $out_dir/w1_scipy.txt)"
+    summarize "$json" || true
+    status=1
+  fi
+fi
+# scipy's rows for W4 (bench/w4_scipy.py), likewise.
+if [[ "W4/n10000/scipy-make_interp_spline-natural W4/n1000000/scipy-CubicSpline-periodic" =~ $filter ]] && \
+    /usr/bin/python3 -c "import scipy" >/dev/null 2>&1; then
+  json="$out_dir/w4_scipy.json"
+  echo "== w4_scipy.py -> $json"
+  if "${pin[@]}" /usr/bin/python3 bench/w4_scipy.py --repetitions 3 --filter "$filter" --out "$json" \
+      >"$out_dir/w4_scipy.txt" 2>&1; then
+    summarize "$json" || status=1
+  else
+    echo "   w4_scipy.py failed (see $out_dir/w4_scipy.txt)"
     summarize "$json" || true
     status=1
   fi
