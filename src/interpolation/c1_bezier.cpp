@@ -8,6 +8,7 @@
 
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
+#include "input_checks.hpp"
 
 namespace casteljau {
 
@@ -20,11 +21,7 @@ Expected<PiecewiseBezierCurve> interpolate_c1_bezier(const PointArray& points, d
   if (!std::isfinite(alpha) || !(alpha > 0.0))
     return Error{"alpha is " + detail::number_text(alpha) + ", it must be finite and > 0"};
   const std::size_t d = static_cast<std::size_t>(points.dimension());
-  const auto coordinates = points.coordinates();
-  for (std::size_t j = 0; j < coordinates.size(); ++j)
-    if (!std::isfinite(coordinates[j]))
-      return Error{"coordinate " + std::to_string(j % d) + " of point " + std::to_string(j / d) + " is " +
-                   (std::isnan(coordinates[j]) ? "NaN" : "infinite")};
+  if (auto finite = detail::check_coordinates(points); !finite) return finite.error();
   if (closed && distance(points[count - 1], points[0]) <= tolerances::kJointRelativeGap * scale_of(points))
     return Error{"the last point of a closed curve repeats the first (point " + std::to_string(count - 1) +
                  "); the closing piece is added by itself, drop the repeated point"};

@@ -9,6 +9,7 @@
 
 #include "casteljau/interpolation/hermite.hpp"
 #include "../core/number_text.hpp"
+#include "input_checks.hpp"
 
 namespace casteljau {
 
@@ -25,21 +26,10 @@ Expected<BSplineCurve> interpolate_catmull_rom(const PointArray& points, std::sp
                  (closed ? " points (closed)" : " points") + " needs " + std::to_string(segments + 1) +
                  " parameter values, got " + std::to_string(parameters.size())};
   // The tangents divide by the steps: check them here, before interpolate_hermite checks the rest.
-  for (std::size_t i = 0; i < parameters.size(); ++i) {
-    if (!std::isfinite(parameters[i]))
-      return Error{"parameter " + std::to_string(i) + " is " + (std::isnan(parameters[i]) ? "NaN" : "infinite")};
-    if (i > 0 && !(parameters[i] > parameters[i - 1]))
-      return Error{"parameters must increase strictly: parameter " + std::to_string(i) + " is " +
-                   detail::number_text(parameters[i]) + ", parameter " + std::to_string(i - 1) + " is " +
-                   detail::number_text(parameters[i - 1])};
-  }
+  if (auto increasing = detail::check_increasing(parameters); !increasing) return increasing.error();
 
   const std::size_t d = static_cast<std::size_t>(points.dimension());
-  const auto coordinates = points.coordinates();
-  for (std::size_t j = 0; j < coordinates.size(); ++j)
-    if (!std::isfinite(coordinates[j]))
-      return Error{"coordinate " + std::to_string(j % d) + " of point " + std::to_string(j / d) + " is " +
-                   (std::isnan(coordinates[j]) ? "NaN" : "infinite")};
+  if (auto finite = detail::check_coordinates(points); !finite) return finite.error();
   // Step j runs from point j to point j+1 (cyclically when closed).
   auto step = [&](std::size_t j) { return parameters[j + 1] - parameters[j]; };
   auto point = [&](std::size_t j) { return points[j == count ? 0 : j]; };

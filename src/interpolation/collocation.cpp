@@ -9,6 +9,7 @@
 
 #include "../core/number_text.hpp"
 #include "banded_system.hpp"
+#include "input_checks.hpp"
 #include "casteljau/bspline/basis.hpp"
 
 namespace casteljau::detail {
@@ -99,26 +100,8 @@ Status check_interpolation_input(const PointArray& points, std::span<const doubl
     return Error{std::to_string(parameters.size()) + " parameter values for " + std::to_string(m) + " points, " +
                  method + " needs " + std::to_string(count)};
   }
-  for (std::size_t i = 0; i < parameters.size(); ++i) {
-    if (!std::isfinite(parameters[i])) {
-      return Error{"parameter " + std::to_string(i) + " is " + (std::isnan(parameters[i]) ? "NaN" : "infinite")};
-    }
-    if (i > 0 && !(parameters[i] > parameters[i - 1])) {
-      return Error{"parameter " + std::to_string(i) + " (" + number_text(parameters[i]) + ") is not greater than parameter " +
-                   std::to_string(i - 1) + " (" + number_text(parameters[i - 1]) + "), parameters must increase strictly"};
-    }
-  }
-  const int d = points.dimension();
-  const std::span<const double> coordinates = points.coordinates();
-  if (!all_finite(coordinates)) {
-    for (std::size_t i = 0; i < coordinates.size(); ++i) {
-      if (!std::isfinite(coordinates[i])) {
-        return Error{"coordinate " + std::to_string(i % static_cast<std::size_t>(d)) + " of point " +
-                     std::to_string(i / static_cast<std::size_t>(d)) + " is " +
-                     (std::isnan(coordinates[i]) ? "NaN" : "infinite")};
-      }
-    }
-  }
+  if (auto increasing = check_increasing(parameters); !increasing) return increasing.error();
+  if (auto finite = check_coordinates(points); !finite) return finite.error();
   return {};
 }
 

@@ -25,6 +25,7 @@
 #include "casteljau/bspline/evaluate.hpp"
 #include "../core/number_text.hpp"
 #include "fit_banded.hpp"
+#include "input_checks.hpp"
 
 namespace casteljau {
 
@@ -50,24 +51,8 @@ Status check_fit_input(const PointArray& points, std::span<const double> paramet
     return Error{"degree " + std::to_string(degree) + " is outside 1.." +
                  std::to_string(tolerances::kMaxBSplineDegree)};
   }
-  const int d = points.dimension();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    for (int c = 0; c < d; ++c) {
-      if (auto finite = check_finite(points[i][static_cast<std::size_t>(c)],
-                                     "coordinate " + std::to_string(c) + " of point " + std::to_string(i));
-          !finite) {
-        return finite.error();
-      }
-    }
-  }
-  for (std::size_t i = 0; i < parameters.size(); ++i) {
-    if (auto finite = check_finite(parameters[i], "parameter " + std::to_string(i)); !finite) return finite.error();
-    if (i > 0 && !(parameters[i] > parameters[i - 1])) {
-      return Error{"parameters must increase strictly: parameter " + std::to_string(i) + " (" +
-                   number_text(parameters[i]) + ") is not above parameter " + std::to_string(i - 1) + " (" +
-                   number_text(parameters[i - 1]) + ")"};
-    }
-  }
+  if (auto finite = detail::check_coordinates(points); !finite) return finite.error();
+  if (auto increasing = detail::check_increasing(parameters); !increasing) return increasing.error();
   const std::size_t needed = static_cast<std::size_t>(degree) + 1;
   if (points.size() < needed) {
     return Error{"a fit of degree " + std::to_string(degree) + " needs at least " + std::to_string(needed) +

@@ -9,6 +9,7 @@
 
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
+#include "input_checks.hpp"
 
 namespace casteljau {
 namespace {
@@ -18,17 +19,6 @@ Status check_vector(std::span<const double> v, const char* what) {
     if (!std::isfinite(v[k]))
       return Error{"coordinate " + std::to_string(k) + " of " + what + " is " +
                    (std::isnan(v[k]) ? "NaN" : "infinite")};
-  return {};
-}
-
-Status check_points(const PointArray& points, const char* what) {
-  for (std::size_t i = 0; i < points.size(); ++i)
-    for (int k = 0; k < points.dimension(); ++k) {
-      const double c = points[i][static_cast<std::size_t>(k)];
-      if (!std::isfinite(c))
-        return Error{"coordinate " + std::to_string(k) + " of " + what + " " + std::to_string(i) + " is " +
-                     (std::isnan(c) ? "NaN" : "infinite")};
-    }
   return {};
 }
 
@@ -78,16 +68,9 @@ Expected<BSplineCurve> interpolate_hermite(const PointArray& points, const Point
     return Error{"Hermite interpolation of " + std::to_string(count) + (closed ? " points (closed)" : " points") +
                  " needs " + std::to_string(segments + 1) + " parameter values, got " +
                  std::to_string(parameters.size())};
-  if (auto s = check_points(points, "point"); !s) return s.error();
-  if (auto s = check_points(tangents, "tangent"); !s) return s.error();
-  for (std::size_t i = 0; i < parameters.size(); ++i) {
-    if (!std::isfinite(parameters[i]))
-      return Error{"parameter " + std::to_string(i) + " is " + (std::isnan(parameters[i]) ? "NaN" : "infinite")};
-    if (i > 0 && !(parameters[i] > parameters[i - 1]))
-      return Error{"parameters must increase strictly: parameter " + std::to_string(i) + " is " +
-                   detail::number_text(parameters[i]) + ", parameter " + std::to_string(i - 1) + " is " +
-                   detail::number_text(parameters[i - 1])};
-  }
+  if (auto s = detail::check_coordinates(points, "point"); !s) return s.error();
+  if (auto s = detail::check_coordinates(tangents, "tangent"); !s) return s.error();
+  if (auto s = detail::check_increasing(parameters); !s) return s.error();
   if (closed && distance(points[count - 1], points[0]) <= tolerances::kJointRelativeGap * scale_of(points))
     return Error{"the last point of a closed curve repeats the first (point " + std::to_string(count - 1) +
                  "); the closing segment is added by itself, drop the repeated point"};

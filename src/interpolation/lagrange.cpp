@@ -12,6 +12,7 @@
 
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
+#include "input_checks.hpp"
 
 namespace casteljau {
 namespace {
@@ -107,20 +108,8 @@ Expected<BarycentricInterpolant> interpolate_lagrange(const PointArray& points, 
   if (parameters.size() != count)
     return Error{"Lagrange interpolation needs one parameter per point: " + std::to_string(count) + " points, " +
                  std::to_string(parameters.size()) + " parameters"};
-  for (std::size_t i = 0; i < count; ++i) {
-    if (!std::isfinite(parameters[i]))
-      return Error{"parameter " + std::to_string(i) + " is " + (std::isnan(parameters[i]) ? "NaN" : "infinite")};
-    if (i > 0 && !(parameters[i] > parameters[i - 1]))
-      return Error{"parameters must increase strictly (distinct nodes): parameter " + std::to_string(i) + " is " +
-                   detail::number_text(parameters[i]) + ", parameter " + std::to_string(i - 1) + " is " +
-                   detail::number_text(parameters[i - 1])};
-  }
-  const std::size_t d = static_cast<std::size_t>(points.dimension());
-  const auto coordinates = points.coordinates();
-  for (std::size_t j = 0; j < coordinates.size(); ++j)
-    if (!std::isfinite(coordinates[j]))
-      return Error{"coordinate " + std::to_string(j % d) + " of point " + std::to_string(j / d) + " is " +
-                   (std::isnan(coordinates[j]) ? "NaN" : "infinite")};
+  if (auto increasing = detail::check_increasing(parameters); !increasing) return increasing.error();
+  if (auto finite = detail::check_coordinates(points); !finite) return finite.error();
   // Differences of finite nodes can overflow (−1e308 and 1e308).
   if (!std::isfinite(parameters.back() - parameters.front()))
     return Error{"the parameter range [" + detail::number_text(parameters.front()) + ", " +

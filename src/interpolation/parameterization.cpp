@@ -8,6 +8,7 @@
 
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
+#include "input_checks.hpp"
 
 namespace casteljau {
 
@@ -32,25 +33,12 @@ std::string step_name(std::size_t i, std::size_t count, bool closed) {
   return "points " + std::to_string(i) + " and " + std::to_string(i + 1);
 }
 
-/// "coordinate k of point i is NaN" for the first non-finite coordinate.
-Status check_coordinates(const PointArray& points) {
-  for (std::size_t i = 0; i < points.coordinates().size(); ++i) {
-    const double value = points.coordinates()[i];
-    if (!std::isfinite(value)) {
-      const auto d = static_cast<std::size_t>(points.dimension());
-      return Error{"coordinate " + std::to_string(i % d) + " of point " + std::to_string(i / d) + " is " +
-                   (std::isnan(value) ? "NaN" : "infinite")};
-    }
-  }
-  return {};
-}
-
 /// The cumulative steps into parameters[1..], computed on coordinates
 /// divided by their scale (no overflow near 1e300, no underflow near
 /// 1e-300; the common factor cancels when the steps are normalized), after
 /// checking that every coordinate is finite and no step is zero.
 Status scaled_steps(const PointArray& points, Parameterization kind, bool closed, std::vector<double>& parameters) {
-  if (auto finite = check_coordinates(points); !finite) return finite.error();
+  if (auto finite = detail::check_coordinates(points); !finite) return finite.error();
   const std::size_t count = points.size();
   const std::size_t steps = closed ? count : count - 1;
   const double scale = scale_of(points);
@@ -100,7 +88,7 @@ Expected<std::vector<double>> parameter_values(const PointArray& points, Paramet
   const std::size_t steps = closed ? count : count - 1;
   std::vector<double> parameters(steps + 1, 0.0);
   if (kind == Parameterization::uniform) {
-    if (auto finite = check_coordinates(points); !finite) return finite.error();
+    if (auto finite = detail::check_coordinates(points); !finite) return finite.error();
     for (std::size_t i = 1; i < steps; ++i) parameters[i] = static_cast<double>(i) / static_cast<double>(steps);
     parameters[steps] = 1.0;
     return parameters;

@@ -480,7 +480,7 @@ TEST(Fit, RefusesBadInputWithOneClearMessage) {
   std::vector<double> repeated = t;
   repeated[4] = repeated[3];
   EXPECT_EQ(error_of(fit_least_squares(points, repeated, 3, 5)),
-            "parameters must increase strictly: parameter 4 (0.25) is not above parameter 3 (0.25)");
+            "parameters must increase strictly: parameter 4 is 0.25, parameter 3 is 0.25");
   std::vector<double> nan_parameter = t;
   nan_parameter[2] = std::nan("");
   EXPECT_EQ(error_of(fit_least_squares(points, nan_parameter, 3, 5)), "parameter 2 is NaN");

@@ -290,7 +290,7 @@ TEST(Lagrange, RefusesBadInput) {
   e = interpolate_lagrange(three, std::vector<double>{0, 1, 1});
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message,
-            "parameters must increase strictly (distinct nodes): parameter 2 is 1, parameter 1 is 1");
+            "parameters must increase strictly: parameter 2 is 1, parameter 1 is 1");
   e = interpolate_lagrange(three, std::vector<double>{0, std::nan(""), 1});
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "parameter 1 is NaN");

@@ -359,7 +359,7 @@ TEST(InterpolateCubic, RefusesBadInput) {
   EXPECT_EQ(message(interpolate_cubic(three, std::vector<double>{0, 1}, natural)),
             "2 parameter values for 3 points, cubic interpolation with natural ends needs 3");
   EXPECT_EQ(message(interpolate_cubic(three, std::vector<double>{0, 1, 1}, natural)),
-            "parameter 2 (1) is not greater than parameter 1 (1), parameters must increase strictly");
+            "parameters must increase strictly: parameter 2 is 1, parameter 1 is 1");
   EXPECT_EQ(message(interpolate_cubic(three, std::vector<double>{0, NAN, 2}, natural)), "parameter 1 is NaN");
   EXPECT_EQ(message(interpolate_cubic(PointArray::from_trusted(2, {0, 0, 1, NAN, 2, 0}), std::vector<double>{0, 1, 2}, natural)),
             "coordinate 1 of point 1 is NaN");
