@@ -5,6 +5,7 @@
 // 1 internal failure. Front ends translate; no geometry lives here.
 
 #include <CLI/CLI.hpp>
+#include <string>
 #include <string_view>
 
 #include "casteljau/core/expected.hpp"
@@ -23,5 +24,9 @@ void add_fit_command(CLI::App& app, int& status);          // cli/fit_command.cp
 int fail(std::string_view message);
 /// The same for an Error from the library.
 int fail(const Error& error);
+/// Writes a command's output: to `path` atomically (nothing is half-written;
+/// a file error is bad input, status 2) or, when `path` is empty, to standard
+/// output (a failure there is the environment's, status 1). 0 on success.
+int write_output(const std::string& path, std::string_view text);
 
 }  // namespace casteljau::cli

@@ -169,18 +169,9 @@ int run_fit(const FitOptions& options) {
   if (!fit) return fail(fit.error());
   const std::string text = models_to_json({Model{fit->curve}});
   const std::string summary = summary_of(*fit);
-
-  if (!options.output.empty()) {
-    if (auto written = write_file_atomically(options.output, text); !written) return fail(written.error());
-    std::fwrite(summary.data(), 1, summary.size(), stdout);
-    return 0;
-  }
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
-    // Not bad input: the environment failed (disk full, closed pipe).
-    std::fprintf(stderr, "casteljau: error: cannot write to standard output: %s\n", std::strerror(errno));
-    return 1;
-  }
-  std::fwrite(summary.data(), 1, summary.size(), stderr);  // the model owns standard output
+  if (const int status = write_output(options.output, text); status != 0) return status;
+  // The summary goes to standard output, unless the model already owns it.
+  std::fwrite(summary.data(), 1, summary.size(), options.output.empty() ? stderr : stdout);
   return 0;
 }
 

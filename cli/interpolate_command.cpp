@@ -354,17 +354,7 @@ int run_interpolate(const InterpolateOptions& options) {
   auto model = build_model(*rules, options, std::move(*points));
   if (!model) return fail(model.error());
   const std::string text = models_to_json({*model});
-
-  if (!options.output.empty()) {
-    if (auto written = write_file_atomically(options.output, text); !written) return fail(written.error());
-    return 0;
-  }
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
-    // Not bad input: the environment failed (disk full, closed pipe).
-    std::fprintf(stderr, "casteljau: error: cannot write to standard output: %s\n", std::strerror(errno));
-    return 1;
-  }
-  return 0;
+  return write_output(options.output, text);
 }
 
 }  // namespace

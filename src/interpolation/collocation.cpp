@@ -53,34 +53,6 @@ bool solve_dense(std::vector<double>& matrix, std::vector<double>& rhs, std::siz
   return true;
 }
 
-/// The p+1 non-zero basis functions at u on `span`: The NURBS Book A2.2,
-/// the same operations as basis_functions (bit-identical results), with the
-/// degree fixed at compile time for the cubic so that the collocation loop
-/// over 10^6 sites inlines it; other degrees call basis_functions.
-constexpr int kFixedBasisDegree = 3;
-constexpr std::size_t kFixedBasisWidth = kFixedBasisDegree + 1;
-
-inline void basis_values(std::span<const double> knots, int p, int span, double u, double* out) {
-  if (p != kFixedBasisDegree) {
-    basis_functions(knots, p, span, u, std::span<double>(out, static_cast<std::size_t>(p) + 1));
-    return;
-  }
-  double left[kFixedBasisWidth], right[kFixedBasisWidth];
-  const double* const t = knots.data() + span;
-  out[0] = 1.0;
-  for (int j = 1; j <= kFixedBasisDegree; ++j) {
-    left[j] = u - t[1 - j];
-    right[j] = t[j] - u;
-    double saved = 0.0;
-    for (int r = 0; r < j; ++r) {
-      const double temp = out[r] / (right[r + 1] + left[j - r]);
-      out[r] = saved + right[r + 1] * temp;
-      saved = left[j - r] * temp;
-    }
-    out[j] = saved;
-  }
-}
-
 bool all_finite(std::span<const double> values) {
   for (double v : values)
     if (!std::isfinite(v)) return false;
@@ -195,17 +167,17 @@ Expected<PointArray> solve_collocation(int degree, std::span<const double> knots
   // right-hand side: one pass, no per-row allocation.
   {
     int span = p;
-    double basis[kFixedBasisWidth];
-    std::vector<double> wide(p > kFixedBasisDegree ? width : 0);
-    double* const out = p > kFixedBasisDegree ? wide.data() : basis;
+    // The cubic's hot path is the tridiagonal sweep (cubic_sweep.hpp); this
+    // general path calls the library's A2.2 as it is.
+    std::vector<double> basis(width);
     const std::span<const double> coordinates = points.coordinates();
     for (std::size_t i = 1; i < interior_end; ++i) {
       const double u = sites[i];
       while (span < last_span && knots[static_cast<std::size_t>(span) + 1] <= u) ++span;
-      basis_values(knots, p, span, u, out);
+      basis_functions(knots, p, span, u, basis);
       const std::size_t row = start_rows + i - 1;
       const std::size_t last = static_cast<std::size_t>(span) - (u == knots[static_cast<std::size_t>(span)] ? 1 : 0);
-      for (std::size_t c = static_cast<std::size_t>(span - p), k = 0; c <= last; ++c, ++k) system.at(row, c) = out[k];
+      for (std::size_t c = static_cast<std::size_t>(span - p), k = 0; c <= last; ++c, ++k) system.at(row, c) = basis[k];
       std::copy_n(coordinates.begin() + static_cast<std::ptrdiff_t>(i * d), d,
                   rhs.begin() + static_cast<std::ptrdiff_t>(row * d));
     }
