@@ -403,10 +403,13 @@ Error singular_error(std::size_t control_points, double lambda) {
 
 // --- GCV search ----------------------------------------------------------------------
 
-/// GCV at λ = λ₀ 10^x, +∞ where the system is singular or GCV undefined.
+/// GCV at λ = λ₀ 10^x, +∞ where the system is singular, GCV undefined, or
+/// the fit (nearly) interpolates.
 double gcv_at(const FitSystem& system, double scale, double x, std::size_t point_count) {
   const auto solution = system.solve(scale * std::pow(10.0, x), true);
   if (!solution) return std::numeric_limits<double>::infinity();
+  if (static_cast<double>(point_count) - solution->trace < tolerances::kGcvNearInterpolation)
+    return std::numeric_limits<double>::infinity();  // (near) interpolation: GCV is rounding noise there
   const double score = gcv_score(solution->residual_sum, solution->trace, point_count);
   return std::isnan(score) ? std::numeric_limits<double>::infinity() : score;
 }

@@ -24,17 +24,10 @@
 namespace casteljau::render {
 namespace {
 
+using detail::figure_of;
+
 /// Number of basis functions in each panel of the basis figures.
 constexpr int kBasisCount = 6;
-
-Figure figure_of(std::string title, int width, int height, int columns) {
-  Figure figure;
-  figure.title = std::move(title);
-  figure.width = width;
-  figure.height = height;
-  figure.columns = columns;
-  return figure;
-}
 
 Expected<GalleryFigure> basis_figure(bool clamped) {
   Figure figure = figure_of(clamped ? "B-spline basis, clamped knots, degrees 0 to 3"

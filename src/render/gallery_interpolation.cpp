@@ -36,14 +36,7 @@
 namespace casteljau::render {
 namespace {
 
-Figure figure_of(std::string title, int width, int height, int columns) {
-  Figure figure;
-  figure.title = std::move(title);
-  figure.width = width;
-  figure.height = height;
-  figure.columns = columns;
-  return figure;
-}
+using detail::figure_of;
 
 Expected<PointArray> read_plane_points(const std::filesystem::path& dir, const char* name) {
   auto points = read_points_csv(dir / name);

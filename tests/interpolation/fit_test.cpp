@@ -510,5 +510,36 @@ TEST(Fit, RefusesBadInputWithOneClearMessage) {
   EXPECT_EQ(error_of(fit_to_tolerance(points, t, 3, Tolerance{std::nan("")})), "the tolerance is NaN");
 }
 
+// GCV does not depend on the parameter's units: stretching x from [0, 1] to
+// [0, L] multiplies the penalty by L^-3, so the chosen λ scales by L³ and the
+// fit is the same. Near interpolation GCV is 0/0 and rounding once made it
+// pick λ ≈ 4e-14 (an interpolant) on [0, 6] (tolerances::kGcvNearInterpolation).
+TEST(FitSmoothing, GcvChoiceIsTheSameInAnyUnitOfX) {
+  test::SplitMix random{2026};
+  const std::size_t count = 41;
+  std::vector<double> unit_x(count), coordinates;
+  for (std::size_t i = 0; i < count; ++i) {
+    unit_x[i] = static_cast<double>(i) / (count - 1);
+    const double noise = 0.2 * (random.unit() - 0.5) + 0.2 * (random.unit() - 0.5);
+    coordinates.push_back(std::sin(6.0 * unit_x[i]) + noise);
+  }
+  const auto values = PointArray::make(1, coordinates).value();
+  SmoothingOptions options;
+  const auto reference = fit_smoothing(values, unit_x, options);
+  ASSERT_TRUE(reference.has_value());
+  EXPECT_TRUE(reference->smoothing_from_gcv);
+  EXPECT_LT(reference->effective_degrees_of_freedom, 20.0);  // it smooths
+  for (const double length : {6.0, 100.0, 1e-3}) {
+    std::vector<double> x(count);
+    for (std::size_t i = 0; i < count; ++i) x[i] = unit_x[i] * length;
+    const auto fit = fit_smoothing(values, x, options);
+    ASSERT_TRUE(fit.has_value());
+    EXPECT_NEAR(fit->effective_degrees_of_freedom, reference->effective_degrees_of_freedom, 1e-3) << length;
+    EXPECT_NEAR(fit->smoothing / (length * length * length), reference->smoothing, 1e-4 * reference->smoothing)
+        << length;
+    EXPECT_NEAR(fit->rms_error, reference->rms_error, 1e-6) << length;
+  }
+}
+
 }  // namespace
 }  // namespace casteljau

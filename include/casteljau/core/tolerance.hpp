@@ -121,6 +121,14 @@ inline constexpr double kGcvGridStepDecades = 0.25;
 /// of the curve, and a few dozen GCV evaluations from the grid's bracket.
 inline constexpr double kGcvRefinementDecades = 1e-6;
 
+/// Smallest n − tr H (residual degrees of freedom) at which GCV is trusted.
+/// Near interpolation GCV = n RSS / (n − tr H)² is 0/0: both factors come
+/// from cancellation, and rounding made it spuriously small (4e-4 against
+/// its true limit 0.035 on 41 noisy points over x in [0, 6]). A thousandth
+/// of a degree of freedom is far from any fit GCV should choose. Unit:
+/// degrees of freedom.
+inline constexpr double kGcvNearInterpolation = 1e-3;
+
 // --- Size limits for untrusted input -----------------------------------------
 // "Huge sizes" are refused with a clear error instead of exhausting memory or
 // running for hours.
