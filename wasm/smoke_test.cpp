@@ -9,6 +9,8 @@
 #include "casteljau/bezier/split.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/interpolation/parameterization.hpp"
+#include "casteljau/interpolation/spline_interpolation.hpp"
 #include "casteljau/ops/flatten.hpp"
 
 namespace {
@@ -60,6 +62,15 @@ int main() {
   check(point_at(*cubic, 1.0) == Point{9, 0}, "clamped B-spline ends at its last control point");
   check(!BSplineCurve::make(1, {0, 0, 0.5, 0.4, 1}, PointArray::make({{0}, {1}, {2}}).value()).has_value(),
         "decreasing knots refused");
+  // Interpolation: not-a-knot cubics reproduce cubic polynomials, here
+  // y = x³ through x = 0..5 (the tridiagonal sweep runs here too).
+  const auto graph = PointArray::make({{0, 0}, {1, 1}, {2, 8}, {3, 27}, {4, 64}, {5, 125}}).value();
+  const auto xs = function_parameters(graph);
+  const auto spline = xs ? interpolate_cubic(graph, *xs, CubicEnds{EndCondition::not_a_knot, {}, {}})
+                         : Expected<BSplineCurve>(xs.error());
+  check(spline && std::abs(point_at(*spline, 2.5)[1] - 15.625) < 1e-12, "not-a-knot cubic reproduces y = x^3");
+  const auto chords = parameter_values(graph, Parameterization::chord_length);
+  check(chords && chords->back() == 1.0, "chord-length parameters end at 1");
   std::printf("%d failed\n", failures);
   return failures == 0 ? 0 : 1;
 }
