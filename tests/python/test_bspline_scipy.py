@@ -18,8 +18,6 @@ environment variable CASTELJAU_CLI (ctest sets it), else build/casteljau.
 
 import json
 import math
-import os
-import pathlib
 import subprocess
 from fractions import Fraction
 
@@ -27,18 +25,12 @@ import numpy as np
 import pytest
 from scipy.interpolate import BSpline
 
-REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
+from cli_support import casteljau_cli
 RELATIVE_TOLERANCE = 1e-12
 DEGREES = range(1, 8)
 DIMENSIONS = (2, 3)
 CURVES_PER_CASE = 2
 
-
-def casteljau_cli():
-    path = os.environ.get("CASTELJAU_CLI") or str(REPOSITORY / "build" / "casteljau")
-    if not os.access(path, os.X_OK):
-        pytest.fail(f"no casteljau executable at {path!r}: set CASTELJAU_CLI")
-    return path
 
 
 # --- random curves -------------------------------------------------------------------

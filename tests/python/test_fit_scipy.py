@@ -23,8 +23,6 @@ build/casteljau.
 """
 
 import json
-import os
-import pathlib
 import re
 import subprocess
 
@@ -33,14 +31,8 @@ import pytest
 from scipy.interpolate import BSpline, make_lsq_spline, make_smoothing_spline
 from scipy.interpolate import _bsplines
 
-REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
+from cli_support import casteljau_cli
 
-
-def casteljau_cli():
-    path = os.environ.get("CASTELJAU_CLI") or str(REPOSITORY / "build" / "casteljau")
-    if not os.access(path, os.X_OK):
-        pytest.fail(f"no casteljau executable at {path!r}: set CASTELJAU_CLI")
-    return path
 
 
 def write_points(path, points):

@@ -28,8 +28,6 @@ CASTELJAU_CLI (ctest sets it), else build/casteljau.
 """
 
 import json
-import os
-import pathlib
 import subprocess
 
 import numpy as np
@@ -37,19 +35,13 @@ import pytest
 from scipy.interpolate import (BarycentricInterpolator, BSpline, CubicHermiteSpline, CubicSpline,
                                make_interp_spline)
 
-REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
+from cli_support import REPOSITORY, casteljau_cli
 EXAMPLES = REPOSITORY / "examples"
 RELATIVE_TOLERANCE = 1e-12
 PARAMS = ("uniform", "chord", "centripetal")
 ENDS = ("natural", "clamped", "not-a-knot", "periodic")
 WORST = {}
 
-
-def casteljau_cli():
-    path = os.environ.get("CASTELJAU_CLI") or str(REPOSITORY / "build" / "casteljau")
-    if not os.access(path, os.X_OK):
-        pytest.fail(f"no casteljau executable at {path!r}: set CASTELJAU_CLI")
-    return path
 
 
 def record(method, error):
