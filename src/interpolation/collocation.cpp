@@ -81,7 +81,7 @@ Expected<PointArray> solve_collocation(int degree, std::span<const double> knots
                                        const PointArray& points, std::span<const EndConstraint> constraints) {
   const int p = degree;
   const std::size_t width = static_cast<std::size_t>(p) + 1;
-  assert(p >= 1 && knots.size() > 2 * width);
+  assert(p >= 1 && knots.size() >= 2 * width);
   const std::size_t unknowns = knots.size() - width;  // n + 1
   assert(unknowns == sites.size() + constraints.size());
   assert(sites.size() == points.size() && sites.size() >= 2);
