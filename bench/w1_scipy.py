@@ -16,13 +16,14 @@ stdout or to --out, so bench/run.sh summarizes it like the C++ rows.
 Run with /usr/bin/python3 (Debian's numpy and scipy).
 """
 import argparse
-import json
 import statistics
 import sys
 import time
 
 import numpy as np
 from scipy.interpolate import BSpline
+
+from benchmark_json import write_benchmark_json
 
 DEGREE = 3
 CONTROL_POINTS = 1000
@@ -118,13 +119,7 @@ def main():
             rows.append(dict(base, name=name + "/real_time_median", run_type="aggregate", aggregate_name="median",
                              iterations=args.repetitions, real_time=median * 1e3, cpu_time=median * 1e3,
                              items_per_second=PARAMETERS / median))
-    document = {"context": {"library": "scipy", "executable": sys.argv[0]}, "benchmarks": rows}
-    text = json.dumps(document, indent=1)
-    if args.out == "-":
-        print(text)
-    else:
-        with open(args.out, "w") as f:
-            f.write(text)
+    write_benchmark_json(rows, args.out)
     return 1 if failed else 0
 
 

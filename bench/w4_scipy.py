@@ -30,7 +30,6 @@ coordinate); above 1e-9 the row fails. Prints Google Benchmark's JSON shape
 Run with /usr/bin/python3 (Debian's numpy and scipy).
 """
 import argparse
-import json
 import math
 import random
 import re
@@ -40,6 +39,8 @@ import time
 
 import numpy as np
 from scipy.interpolate import CubicSpline, make_interp_spline
+
+from benchmark_json import write_benchmark_json
 
 SIZES = (10_000, 1_000_000)
 DRIFT = np.array([0.1, 0.05, -0.02])
@@ -204,13 +205,7 @@ def main():
         median_cpu = statistics.median(cpu for _, cpu, _ in times[name])
         results.append(dict(base, name=name + "/real_time_median", run_type="aggregate", aggregate_name="median",
                             iterations=args.repetitions, real_time=median * 1e3, cpu_time=median_cpu * 1e3))
-    document = {"context": {"library": "scipy", "executable": sys.argv[0]}, "benchmarks": results}
-    text = json.dumps(document, indent=1)
-    if args.out == "-":
-        print(text)
-    else:
-        with open(args.out, "w") as f:
-            f.write(text)
+    write_benchmark_json(results, args.out)
     return 1 if failed else 0
 
 
