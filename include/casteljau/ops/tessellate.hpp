@@ -1,0 +1,31 @@
+#pragma once
+// Tessellation of surfaces into triangle meshes within a distance tolerance.
+//
+// Each patch's parameter domain is refined adaptively (a quadtree of
+// rectangles, starting from its knot spans) until the triangles are within
+// the tolerance of the surface; each leaf is triangulated with every vertex
+// its neighbours put on its sides, so there are no T-junctions inside a
+// patch. Where patches share a boundary (the same curve, in either
+// direction, or a patch's own seam such as the u = 0 and u = 1 edges of a
+// surface of revolution), the boundary vertices are shared, so the mesh is
+// watertight across it; edges collapsed to a point (poles) become one vertex.
+// See docs/surfaces.md for the method and its guarantees.
+#include <span>
+#include "casteljau/core/expected.hpp"
+#include "casteljau/core/tolerance.hpp"
+#include "casteljau/ops/mesh.hpp"
+#include "casteljau/surfaces/surface_view.hpp"
+
+namespace casteljau {
+
+/// A mesh of the patches within tolerance.distance: every point of a triangle
+/// lies within the tolerance of the surface (measured at the parameters
+/// interpolated linearly over the triangle). Normals are the surfaces' unit
+/// normals at the vertices (normal_at). All patches must be in R^3.
+/// Errors: no patch, a tolerance not finite or <= 0 or below
+/// tolerances::kMeshSmallestToleranceFactor ulps of the patches' scale, a
+/// patch not in R^3 ("patch 2 is in R^2, tessellation needs 3D surfaces"),
+/// more than tolerances::kMaxMeshTriangles triangles needed.
+Expected<TriangleMesh> tessellate(std::span<const SurfaceView> patches, Tolerance tolerance);
+
+}  // namespace casteljau

@@ -1,0 +1,43 @@
+#pragma once
+// SurfaceView: a non-owning reference to any surface of casteljau, for the
+// algorithms that only evaluate a surface (tessellation, figures). Like a
+// span, it does not own what it shows: the surface must outlive the view.
+// It is the one place that dispatches on the surface kind below io/.
+#include <span>
+#include "casteljau/core/interval.hpp"
+#include "casteljau/core/point_array.hpp"
+#include "casteljau/surfaces/bezier_surface.hpp"
+#include "casteljau/surfaces/bspline_surface.hpp"
+#include "casteljau/surfaces/coons.hpp"
+
+namespace casteljau {
+
+/// A view of a Bézier, B-spline/NURBS surface or Coons patch.
+class SurfaceView {
+ public:
+  /// Views of the three surface kinds (implicit, like span from a vector).
+  SurfaceView(const BSplineSurface& surface) noexcept;  // NOLINT: implicit by design
+  SurfaceView(const BezierSurface& surface) noexcept;   // NOLINT
+  SurfaceView(const CoonsPatch& patch) noexcept;        // NOLINT
+
+  /// The parameter domain in u and in v ([0,1] for Bézier and Coons patches).
+  Interval domain_u() const noexcept;
+  Interval domain_v() const noexcept;
+  /// d.
+  int dimension() const noexcept;
+  /// S(u,v) (surfaces/evaluate.hpp, surfaces/coons.hpp).
+  Point point_at(double u, double v) const;
+  /// d^(k+l) S / du^k dv^l.
+  Point partial_derivative_at(double u, double v, int order_u, int order_v) const;
+  /// The unit normal (d == 3), with the limit at degenerate points (normal_at).
+  Point normal_at(double u, double v) const;
+  /// Grid batch, laid out as grid_points_at.
+  void grid_points_at(std::span<const double> us, std::span<const double> vs, std::span<double> out) const;
+
+ private:
+  enum class Kind { bspline, bezier, coons };
+  Kind kind_;
+  const void* surface_;
+};
+
+}  // namespace casteljau
