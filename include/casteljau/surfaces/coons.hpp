@@ -6,6 +6,7 @@
 // with f0(t) = 1 - t, f1(t) = t (bilinearly blended) or the cubic Hermite
 // blending f0(t) = 2t^3 - 3t^2 + 1, f1(t) = 3t^2 - 2t^3. Either patch
 // reproduces its four boundaries.
+#include <array>
 #include <span>
 #include <vector>
 #include "casteljau/bspline/bspline_curve.hpp"
@@ -51,6 +52,14 @@ class CoonsPatch {
 
 /// The blending name in model JSON ("linear", "cubic").
 const char* blending_name(CoonsBlending blending);
+
+/// The k-th derivatives {f0^(k)(t), f1^(k)(t)} of the blending functions,
+/// order k >= 0: linear f0 = 1 - t, f1 = t; cubic (Hermite, seed 001 §2
+/// corrected) f0 = 2t^3 - 3t^2 + 1 = (1 - t)^2 (1 + 2t), f1 = 3t^2 - 2t^3 =
+/// t^2 (3 - 2t), computed in those factored forms so that f0(0) = f1(1) = 1
+/// and f0(1) = f1(0) = 0 exactly. Derivatives above 1 (linear) or 3 (cubic)
+/// are 0. O(1).
+std::array<double, 2> blending_functions(CoonsBlending blending, double t, int order = 0);
 
 /// P(u,v) by the formula above; the corners P00.. are the ends of the u0 and
 /// u1 curves, so P(0,v) = u0(v) and P(1,v) = u1(v) to rounding, and P(u,0),
