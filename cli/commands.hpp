@@ -19,6 +19,7 @@ void add_gallery_command(CLI::App& app, int& status);    // cli/gallery_command.
 void add_convert_command(CLI::App& app, int& status);    // cli/convert_command.cpp
 void add_interpolate_command(CLI::App& app, int& status);  // cli/interpolate_command.cpp
 void add_fit_command(CLI::App& app, int& status);          // cli/fit_command.cpp
+void add_tessellate_command(CLI::App& app, int& status);   // cli/tessellate_command.cpp
 
 /// Prints "casteljau: error: <message>" on stderr and returns 2 (bad input).
 int fail(std::string_view message);

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   add_convert_command(app, status);
   add_interpolate_command(app, status);
   add_fit_command(app, status);
+  add_tessellate_command(app, status);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

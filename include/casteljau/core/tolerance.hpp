@@ -203,5 +203,73 @@ inline constexpr int kMaxNaturalSplineOrder = 8;
 /// before a byte is read.
 inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{1} << 30;
 
+// --- Tessellation and meshes (helper C: ops/tessellate.hpp, ops/mesh.hpp) ----
+
+/// Smallest tessellation tolerance accepted, in ulps (2^-52) of the patches'
+/// scale (their largest absolute coordinate, sampled). The tessellator
+/// compares surface points with points interpolated on triangles; both carry
+/// rounding of a few dozen ulps of the scale (a tensor-product evaluation, a
+/// barycentric combination), so a tolerance of 10^4 ulps (about 2e-12
+/// relative) is the smallest whose check still means something. Below it the
+/// request is refused, not refined down to rounding noise.
+inline constexpr double kMeshSmallestToleranceFactor = 1e4;
+
+/// Most triangles one tessellation may produce. 10^7 triangles with their
+/// vertices and normals take about 0.6 GB (indices 12 bytes, vertex and
+/// normal 48 bytes, about half a vertex per triangle, plus the quadtree):
+/// the edge of what fits in memory and far beyond what a viewer needs.
+inline constexpr std::size_t kMaxMeshTriangles = 10'000'000;
+
+/// The tessellator checks a candidate triangulation by sampling the surface
+/// at interior parameters (a 7 x 7 grid per quadtree cell, the edge midpoints,
+/// centroid and third points of each final triangle) and accepts it when the
+/// largest sampled deviation is at most this fraction of the tolerance. The
+/// deviation of a smooth surface from a triangle is close to a quadratic in
+/// the parameters, vanishing at the vertices, and those samples catch the
+/// maximum of such a quadratic to within about 25 %; 0.75 keeps the true
+/// maximum below the tolerance with that margin (measured in
+/// tests/ops/tessellate_test.cpp: the densely measured maximum stays below
+/// the tolerance). Dimensionless.
+inline constexpr double kMeshSampledDeviationFraction = 0.75;
+
+/// Largest angle, in radians, between the unit normals at the corners of one
+/// quadtree cell of a tessellation (60 degrees). Sampling can only be trusted
+/// where the surface turns by a bounded amount over the cell; the bound also
+/// keeps the triangles' own normals close to the surface normals at their
+/// vertices, so that shading and orientation agree, even at a loose tolerance.
+inline constexpr double kMeshMaxNormalTurn = 1.0471975511965976;
+
+/// Deepest subdivision of one knot-span cell of a tessellation's quadtree, in
+/// halvings per direction. Cells are addressed by integers (2^40 steps per
+/// knot span) so that neighbours agree exactly on shared vertices; a cell at
+/// this depth is accepted as it is (2^-40 of a span is below any tolerance
+/// that kMeshSmallestToleranceFactor and kMaxMeshTriangles leave possible).
+inline constexpr int kMeshMaxDepth = 40;
+
+/// Two patch edges count as the same curve (so the tessellation shares their
+/// vertices and is watertight across them) when their points at a few
+/// normalized parameters, in the same or in opposite directions, are within
+/// this fraction of the patches' scale; an edge whose samples are all within
+/// it of one point is collapsed (a pole). Edges meant to be shared (written
+/// by casteljau, or data rounded to 9 significant digits) agree to 1e-15 to
+/// 1e-9 relative, like curves joined end to start (kJointRelativeGap); edges
+/// that merely pass near each other differ by far more. Unit: fraction of the
+/// scale.
+inline constexpr double kMeshSharedEdgeRelative = 1e-9;
+
+/// Two vertices of shared edges coming from different patches are one
+/// vertex when their normalized edge parameters differ by at most this
+/// (dimensionless): both patches then put the same point there, to rounding.
+/// Vertices of one edge are never merged with each other.
+inline constexpr double kMeshSameEdgeParameter = 1e-12;
+
+// --- Surface figures (helper D: render/surface_plots.hpp) --------------------
+
+/// Distance tolerance of the shaded image of `plot` and the gallery, relative
+/// to the diagonal of the surfaces' control-point box (dimensionless): 1/500
+/// of the figure's extent is about one pixel in a 700-pixel panel, so the
+/// facets of the mesh do not show in the shading.
+inline constexpr double kShadedSurfaceRelativeTolerance = 2e-3;
+
 }  // namespace tolerances
 }  // namespace casteljau

@@ -4,6 +4,7 @@
 // span, it does not own what it shows: the surface must outlive the view.
 // It is the one place that dispatches on the surface kind below io/.
 #include <span>
+#include <vector>
 #include "casteljau/core/interval.hpp"
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/surfaces/bezier_surface.hpp"
@@ -33,6 +34,13 @@ class SurfaceView {
   Point normal_at(double u, double v) const;
   /// Grid batch, laid out as grid_points_at.
   void grid_points_at(std::span<const double> us, std::span<const double> vs, std::span<double> out) const;
+  /// The distinct knots of the u (v) direction inside the domain, both ends
+  /// included and increasing: the lines across which the surface may be less
+  /// smooth, where tessellation starts its quadtree. {0, 1} for a Bézier
+  /// patch; for a Coons patch, the knots of the two boundaries that run along
+  /// that direction (v0 and v1 for u, u0 and u1 for v), merged.
+  std::vector<double> breakpoints_u() const;
+  std::vector<double> breakpoints_v() const;
 
  private:
   enum class Kind { bspline, bezier, coons };

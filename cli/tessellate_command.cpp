@@ -1,0 +1,133 @@
+// casteljau tessellate: the surfaces of a model JSON file as one triangle
+// mesh within a distance tolerance (ops/tessellate.hpp), written as OBJ,
+// binary STL or binary PLY (io/obj.hpp, io/stl.hpp, io/ply.hpp) chosen by the
+// output's extension. Several surfaces in one file ({"models": [...]}) give
+// one mesh, welded where they share edges. The command only translates:
+// every check runs before anything is written; the mesh is built in memory and
+// written atomically; one summary line goes to standard output.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "casteljau/io/csv.hpp"
+#include "casteljau/io/file.hpp"
+#include "casteljau/io/model.hpp"
+#include "casteljau/io/model_json.hpp"
+#include "casteljau/io/obj.hpp"
+#include "casteljau/io/ply.hpp"
+#include "casteljau/io/stl.hpp"
+#include "casteljau/ops/mesh.hpp"
+#include "casteljau/ops/tessellate.hpp"
+#include "commands.hpp"
+
+namespace casteljau::cli {
+namespace {
+
+struct TessellateOptions {
+  std::string model;
+  std::string tolerance;
+  std::string output;
+};
+
+enum class MeshFormat { obj, stl, ply };
+
+/// The format named by the output's extension, any case.
+Expected<MeshFormat> format_of(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  std::string extension;
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) extension = path.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == "obj") return MeshFormat::obj;
+  if (extension == "stl") return MeshFormat::stl;
+  if (extension == "ply") return MeshFormat::ply;
+  return Error{fmt::format("-o: '{}' does not end in .obj, .stl or .ply (the mesh format comes from the extension)",
+                           display_name(path))};
+}
+
+/// "the bspline model in 'm.json'" or "models[1] (bspline) in 'm.json'".
+std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file) {
+  const std::string name = display_name(file);
+  if (models.size() == 1) return fmt::format("the {} model in '{}'", type_name(models[index]), name);
+  return fmt::format("models[{}] ({}) in '{}'", index, type_name(models[index]), name);
+}
+
+std::string summary_of(const TriangleMesh& mesh) {
+  const MeshTopology topology = mesh_topology(mesh);
+  std::string line = fmt::format("tessellate: {} triangles, {} vertices, ", mesh.triangles.size(),
+                                 mesh.vertices.size());
+  if (topology.watertight()) {
+    line += "watertight\n";
+  } else {
+    line += fmt::format("not watertight ({} boundary edges, {} non-manifold edges, {} inconsistently oriented "
+                        "edges, {} degenerate triangles)\n",
+                        topology.boundary_edges, topology.non_manifold_edges,
+                        topology.inconsistently_oriented_edges, topology.degenerate_triangles);
+  }
+  return line;
+}
+
+int run_tessellate(const TessellateOptions& options) {
+  auto format = format_of(options.output);
+  if (!format) return fail(format.error());
+  auto tolerance = parse_number(options.tolerance);
+  if (!tolerance) return fail("--tolerance: " + tolerance.error().message);
+  if (!(*tolerance > 0.0)) return fail(fmt::format("--tolerance: {} is not > 0", *tolerance));
+  auto models = read_models_json(options.model);
+  if (!models) return fail(models.error());
+  std::vector<SurfaceView> views;
+  for (std::size_t i = 0; i < models->size(); ++i) {
+    const Model& model = (*models)[i];
+    if (!is_surface(model)) {
+      return fail(fmt::format("{} is a curve; tessellate needs surfaces", model_name(*models, i, options.model)));
+    }
+    const SurfaceView view = surface_view(model);
+    if (view.dimension() != 3) {
+      return fail(fmt::format("{} is in R^{}; tessellate needs surfaces in 3D",
+                              model_name(*models, i, options.model), view.dimension()));
+    }
+    views.push_back(view);
+  }
+  auto mesh = tessellate(views, Tolerance{*tolerance});
+  if (!mesh) return fail(fmt::format("{}: {}", display_name(options.model), mesh.error().message));
+  std::string bytes;
+  switch (*format) {
+    case MeshFormat::obj: bytes = to_obj(*mesh); break;
+    case MeshFormat::stl: bytes = to_stl(*mesh); break;
+    case MeshFormat::ply: bytes = to_ply(*mesh); break;
+  }
+  if (const int status = write_output(options.output, bytes); status != 0) return status;
+  const std::string summary = summary_of(*mesh);
+  std::fwrite(summary.data(), 1, summary.size(), stdout);
+  return 0;
+}
+
+}  // namespace
+
+void add_tessellate_command(CLI::App& app, int& status) {
+  auto options = std::make_shared<TessellateOptions>();
+  CLI::App* command = app.add_subcommand(
+      "tessellate",
+      "A triangle mesh of the surfaces in SURFACE.json (bezier_surface, bspline_surface, coons; several in "
+      "{\"models\": [...]} give one mesh, welded where they share an edge) such that every point of a triangle "
+      "is within E of the surface at the linearly interpolated parameters (docs/surfaces.md). Adaptive: flat "
+      "regions get large triangles. Per-vertex normals are the surface's. Written to MESH as Wavefront OBJ, "
+      "binary STL or binary little-endian PLY, by its extension (any case). One summary line on standard "
+      "output: triangles, vertices, and whether the mesh is watertight.");
+  command->add_option("SURFACE", options->model, "Model JSON file with one or more surfaces in 3D")->required();
+  command->add_option("--tolerance", options->tolerance, "Largest distance E > 0 from the mesh to the surface")
+      ->type_name("E")
+      ->required();
+  command->add_option("-o,--output", options->output, "MESH.obj, MESH.stl or MESH.ply (written atomically)")
+      ->type_name("FILE")
+      ->required();
+  command->callback([options, &status] { status = run_tessellate(*options); });
+}
+
+}  // namespace casteljau::cli

@@ -1,0 +1,78 @@
+// mesh_topology: how the triangles of an indexed mesh meet along their edges.
+// Every triangle contributes its three directed edges; sorting them by the
+// undirected pair (smaller index first) puts the uses of one edge side by
+// side, and each run tells boundary (1 use), manifold (2 uses, opposite
+// directions), inconsistently oriented (2 uses, same direction) or
+// non-manifold (3 or more).
+#include "casteljau/ops/mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "casteljau/core/tolerance.hpp"
+
+namespace casteljau {
+namespace {
+
+/// One use of an undirected edge: its end indices in increasing order and
+/// whether the triangle runs it from the smaller to the larger.
+struct EdgeUse {
+  std::uint32_t low = 0;
+  std::uint32_t high = 0;
+  bool forward = false;
+};
+
+/// True when the triangle's vertices are (to rounding) on one line: the
+/// cross product of two edges is at most a few ulps (tolerances::kRoundingSlack)
+/// of the product of their lengths, i.e. the sine of the angle between them.
+bool has_zero_area(const PointArray& vertices, const std::array<std::uint32_t, 3>& triangle) {
+  const auto a = vertices[triangle[0]], b = vertices[triangle[1]], c = vertices[triangle[2]];
+  const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const double cross[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
+  const double area = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+  const double lengths = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) *
+                         std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+  return area <= tolerances::kRoundingSlack * lengths;
+}
+
+}  // namespace
+
+MeshTopology mesh_topology(const TriangleMesh& mesh) {
+  MeshTopology topology;
+  std::vector<EdgeUse> uses;
+  uses.reserve(mesh.triangles.size() * 3);
+  for (const auto& triangle : mesh.triangles) {
+    if (triangle[0] == triangle[1] || triangle[1] == triangle[2] || triangle[2] == triangle[0]) {
+      // Its "edges" are not edges of a surface: count the triangle, skip them.
+      ++topology.degenerate_triangles;
+      continue;
+    }
+    if (has_zero_area(mesh.vertices, triangle)) ++topology.degenerate_triangles;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t from = triangle[k], to = triangle[(k + 1) % 3];
+      uses.push_back(EdgeUse{std::min(from, to), std::max(from, to), from < to});
+    }
+  }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return x.low != y.low ? x.low < y.low : x.high < y.high;
+  });
+  for (std::size_t first = 0; first < uses.size();) {
+    std::size_t last = first + 1;
+    while (last < uses.size() && uses[last].low == uses[first].low && uses[last].high == uses[first].high) ++last;
+    const std::size_t count = last - first;
+    if (count == 1) {
+      ++topology.boundary_edges;
+    } else if (count == 2) {
+      if (uses[first].forward == uses[first + 1].forward) ++topology.inconsistently_oriented_edges;
+    } else {
+      ++topology.non_manifold_edges;
+    }
+    first = last;
+  }
+  return topology;
+}
+
+}  // namespace casteljau
