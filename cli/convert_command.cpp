@@ -43,7 +43,9 @@ Model to_bezier_pieces_model(const Model& model) {
   return std::visit(
       Overloaded{[](const BezierCurve& c) -> Model { return PiecewiseBezierCurve::make({c}).value(); },
                  [](const PiecewiseBezierCurve& c) -> Model { return c; },
-                 [](const BSplineCurve& c) -> Model { return to_piecewise_bezier(to_bezier_pieces(c)); }},
+                 [](const BSplineCurve& c) -> Model { return to_piecewise_bezier(to_bezier_pieces(c)); },
+                 // Surfaces are refused by run_convert before this point.
+                 [](const auto& surface) -> Model { return surface; }},
       model);
 }
 
@@ -57,7 +59,14 @@ Expected<Model> to_bspline_model(const Model& model) {
                                  if (!curve) return curve.error();
                                  return Model{std::move(*curve)};
                                },
-                               [](const BSplineCurve& c) -> Expected<Model> { return Model{c}; }},
+                               [](const BSplineCurve& c) -> Expected<Model> { return Model{c}; },
+                               [](const BezierSurface& s) -> Expected<Model> { return Model{to_bspline_surface(s)}; },
+                               [](const BSplineSurface& s) -> Expected<Model> { return Model{s}; },
+                               [](const CoonsPatch& p) -> Expected<Model> {
+                                 auto surface = to_bspline_surface(p);
+                                 if (!surface) return surface.error();
+                                 return Model{std::move(*surface)};
+                               }},
                     model);
 }
 
@@ -89,6 +98,10 @@ int run_convert(const ConvertOptions& options) {
   converted.reserve(models->size());
   for (std::size_t m = 0; m < models->size(); ++m) {
     const Model& model = (*models)[m];
+    if (to_pieces && is_surface(model)) {
+      return fail(fmt::format("--to bezier-pieces: {} is a surface; surfaces convert only to bspline or json",
+                              model_name(*models, m, options.model)));
+    }
     if (to_pieces) {
       converted.push_back(to_bezier_pieces_model(model));
     } else if (to_spline) {

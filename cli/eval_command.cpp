@@ -5,12 +5,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "casteljau/io/csv.hpp"
@@ -56,6 +58,95 @@ std::string model_name(const std::vector<Model>& models, std::size_t index, cons
 
 std::string domain_text(const Interval& domain) { return fmt::format("[{}, {}]", domain.lower, domain.upper); }
 
+/// "[0, 1] x [0, 2]": the parameter rectangle of a surface.
+std::string domain_text(const SurfaceView& view) {
+  return domain_text(view.domain_u()) + " x " + domain_text(view.domain_v());
+}
+
+/// Text without the spaces and tabs around it.
+std::string_view trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t");
+  return text.substr(first, last - first + 1);
+}
+
+/// "u,v": two numbers separated by one comma (blanks around each allowed).
+Expected<std::array<double, 2>> parse_pair(std::string_view text) {
+  const auto comma = text.find(',');
+  if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos) {
+    return Error{fmt::format("'{}' is not a parameter pair u,v", text.substr(0, 60))};
+  }
+  auto u = parse_number(trimmed(text.substr(0, comma)));
+  if (!u) return u.error();
+  auto v = parse_number(trimmed(text.substr(comma + 1)));
+  if (!v) return v.error();
+  return std::array<double, 2>{*u, *v};
+}
+
+/// The parameters and derivative order of the curves in the file.
+struct CurveRequest {
+  std::vector<double> at;
+  NumberColumn params;
+  int derivative = 0;
+};
+
+/// The parameter pairs and derivative orders of the surfaces in the file.
+struct SurfaceRequest {
+  std::vector<std::array<double, 2>> at;
+  PointArray params;  // two columns (u, v), one row per pair
+  int derivative_u = 0;
+  int derivative_v = 0;
+};
+
+/// N evenly spaced parameters over [lower, upper], as numpy.linspace: the
+/// product formed first so that integer domains give correctly rounded
+/// quotients; the last one is exactly `upper`, and N = 1 gives `lower`.
+void append_samples(std::vector<double>& us, const Interval& domain, std::size_t samples) {
+  const double width = domain.upper - domain.lower;
+  for (std::size_t i = 0; i < samples; ++i) {
+    const bool last = samples > 1 && i + 1 == samples;
+    us.push_back(samples == 1 ? domain.lower
+                 : last       ? domain.upper
+                              : domain.lower + width * static_cast<double>(i) / static_cast<double>(samples - 1));
+  }
+}
+
+/// A surface's points or partial derivatives d^(k+l)S/du^k dv^l: first at the
+/// --at pairs, then at the --params rows, then on the N x N grid of --samples
+/// (u the slow index: line a*N + b is S(u_a, v_b)). Appends CSV to `out`.
+void evaluate_surface(const SurfaceView& view, const SurfaceRequest& request, std::size_t samples, std::string& out) {
+  const auto d = static_cast<std::size_t>(view.dimension());
+  const bool points = request.derivative_u == 0 && request.derivative_v == 0;
+  std::vector<double> block;
+  const auto one = [&](double u, double v) {
+    const Point value =
+        points ? view.point_at(u, v) : view.partial_derivative_at(u, v, request.derivative_u, request.derivative_v);
+    block.insert(block.end(), value.begin(), value.end());
+  };
+  for (const auto& [u, v] : request.at) one(u, v);
+  for (std::size_t k = 0; k < request.params.size(); ++k) one(request.params[k][0], request.params[k][1]);
+  append_points_csv(out, block, static_cast<int>(d));
+  if (samples == 0) return;
+  std::vector<double> us, vs;
+  append_samples(us, view.domain_u(), samples);
+  append_samples(vs, view.domain_v(), samples);
+  if (points) {
+    // One row of the grid (fixed u) at a time: bounded scratch memory.
+    block.resize(samples * d);
+    for (const double u : us) {
+      view.grid_points_at(std::span<const double>(&u, 1), vs, block);
+      append_points_csv(out, block, static_cast<int>(d));
+    }
+    return;
+  }
+  for (const double u : us) {
+    block.clear();
+    for (const double v : vs) one(u, v);
+    append_points_csv(out, block, static_cast<int>(d));
+  }
+}
+
 /// Writes the whole output to stdout; false (with errno) when it fails.
 bool write_stdout(const std::string& text) {
   if (!text.empty() && std::fwrite(text.data(), 1, text.size(), stdout) != text.size()) return false;
@@ -65,13 +156,7 @@ bool write_stdout(const std::string& text) {
 int run_eval(const EvalOptions& options) {
   constexpr std::size_t kLimit = tolerances::kMaxEvaluationParameters;
 
-  // --- options -------------------------------------------------------------
-  std::vector<double> at_values;
-  for (const auto& text : options.at) {
-    auto value = parse_number(text);
-    if (!value) return fail("--at: " + value.error().message);
-    at_values.push_back(*value);
-  }
+  // --- options that do not depend on the models ----------------------------
   std::size_t samples = 0;
   const bool has_samples = !options.samples.empty();
   if (has_samples) {
@@ -80,29 +165,98 @@ int run_eval(const EvalOptions& options) {
     if (*n == 0) return fail("--samples: 0 samples, give N >= 1 (N = 1 is the start of the domain)");
     samples = *n;
   }
-  auto order =
-      whole_number("--derivative", options.derivative, static_cast<std::size_t>(tolerances::kMaxDerivativeOrder));
-  if (!order) return fail(order.error());
-  const int derivative = static_cast<int>(*order);
-  if (at_values.empty() && options.params.empty() && !has_samples) {
-    return fail("nothing to evaluate: give --at T, --params FILE.csv or --samples N");
+  if (options.at.empty() && options.params.empty() && !has_samples) {
+    return fail("nothing to evaluate: give --at T (u,v for a surface), --params FILE.csv or --samples N");
   }
 
   // --- inputs --------------------------------------------------------------
   const auto models = read_models(options.model);
   if (!models) return fail(models.error());
-  NumberColumn params;
-  if (!options.params.empty()) {
-    const auto text = read_text_file(options.params);
-    if (!text) return fail(text.error());
-    auto column = parse_numbers_csv(*text, display_name(options.params), kLimit);
-    if (!column) return fail(column.error());
-    params = std::move(*column);
+  bool any_curve = false, any_surface = false;
+  for (const Model& model : *models) (is_surface(model) ? any_surface : any_curve) = true;
+
+  // --- the options read as the models' kinds need them ----------------------
+  // A curve takes T and K, a surface u,v and ku,kv; a file that mixes both
+  // kinds can only be sampled (or differentiated with the default 0).
+  const auto max_order = static_cast<std::size_t>(tolerances::kMaxDerivativeOrder);
+  CurveRequest curve;
+  SurfaceRequest surface;
+  if (any_curve) {
+    for (const auto& text : options.at) {
+      auto value = parse_number(text);
+      if (!value) {
+        return fail(fmt::format("--at: {}{}", value.error().message,
+                                text.find(',') != std::string::npos ? " (u,v is for surfaces; a curve takes one T)"
+                                                                    : ""));
+      }
+      curve.at.push_back(*value);
+    }
+    auto order = whole_number("--derivative", options.derivative, max_order);
+    if (!order) return fail(order.error().message + (options.derivative.find(',') != std::string::npos
+                                                          ? " (ku,kv is for surfaces; a curve takes one K)"
+                                                          : ""));
+    curve.derivative = static_cast<int>(*order);
+    if (!options.params.empty()) {
+      const auto text = read_text_file(options.params);
+      if (!text) return fail(text.error());
+      auto column = parse_numbers_csv(*text, display_name(options.params), kLimit);
+      if (!column) return fail(column.error());
+      curve.params = std::move(*column);
+    }
   }
-  const std::size_t per_model = at_values.size() + params.values.size() + samples;
-  if (per_model > kLimit || models->size() * per_model > kLimit) {
-    return fail(fmt::format("{} model{} at {} parameters is {} evaluations, more than the limit of {}", models->size(),
-                            models->size() == 1 ? "" : "s", per_model, models->size() * per_model, kLimit));
+  if (any_surface) {
+    for (const auto& text : options.at) {
+      auto pair = parse_pair(text);
+      if (!pair) return fail(fmt::format("--at: {} (a surface takes u,v)", pair.error().message));
+      surface.at.push_back(*pair);
+    }
+    // "0" (the default) is the point for both kinds; otherwise ku,kv.
+    if (options.derivative != "0") {
+      const auto comma = options.derivative.find(',');
+      if (comma == std::string::npos) {
+        return fail(fmt::format("--derivative {}: a surface takes two orders ku,kv (d^(ku+kv)S / du^ku dv^kv), "
+                                "e.g. 1,0 for dS/du",
+                                options.derivative.substr(0, 60)));
+      }
+      auto ku = whole_number("--derivative", std::string(trimmed(std::string_view(options.derivative).substr(0, comma))),
+                             max_order);
+      if (!ku) return fail(ku.error());
+      auto kv = whole_number("--derivative",
+                             std::string(trimmed(std::string_view(options.derivative).substr(comma + 1))), max_order);
+      if (!kv) return fail(kv.error());
+      surface.derivative_u = static_cast<int>(*ku);
+      surface.derivative_v = static_cast<int>(*kv);
+    }
+    if (!options.params.empty()) {
+      const auto text = read_text_file(options.params);
+      if (!text) return fail(text.error());
+      auto pairs = parse_points_csv(*text, display_name(options.params));
+      if (!pairs) return fail(pairs.error());
+      if (pairs->dimension() != 2) {
+        return fail(fmt::format("{}: {} column{}, a surface's parameters are two columns u,v",
+                                display_name(options.params), pairs->dimension(), pairs->dimension() == 1 ? "" : "s"));
+      }
+      surface.params = std::move(*pairs);
+    }
+  }
+
+  // --- the amount of work ------------------------------------------------
+  // Counted in double: N x N grids of many models may overflow size_t.
+  const std::size_t curve_count = curve.at.size() + curve.params.values.size() + samples;
+  double total = 0.0;
+  for (const Model& model : *models) {
+    total += is_surface(model) ? static_cast<double>(surface.at.size() + surface.params.size()) +
+                                     static_cast<double>(samples) * static_cast<double>(samples)
+                               : static_cast<double>(curve_count);
+  }
+  if (total > static_cast<double>(kLimit)) {
+    if (!any_surface) {
+      return fail(fmt::format("{} model{} at {} parameters is {} evaluations, more than the limit of {}",
+                              models->size(), models->size() == 1 ? "" : "s", curve_count, total, kLimit));
+    }
+    return fail(fmt::format("{} model{} at these parameters (N x N for a surface) is {} evaluations, more than the "
+                            "limit of {}",
+                            models->size(), models->size() == 1 ? "" : "s", total, kLimit));
   }
 
   // --- every parameter checked against every model's domain ---------------
@@ -110,17 +264,36 @@ int run_eval(const EvalOptions& options) {
   // command line refuses, since a point off the curve is almost always a
   // mistake in the input. All checks come before any evaluation.
   for (std::size_t m = 0; m < models->size(); ++m) {
-    const Interval domain = domain_of((*models)[m]);
-    for (const double u : at_values) {
+    const Model& model = (*models)[m];
+    if (is_surface(model)) {
+      const SurfaceView view = surface_view(model);
+      const auto inside = [&](double u, double v) { return view.domain_u().contains(u) && view.domain_v().contains(v); };
+      for (const auto& [u, v] : surface.at) {
+        if (!inside(u, v)) {
+          return fail(fmt::format("--at {},{} is outside the domain {} of {}", u, v, domain_text(view),
+                                  model_name(*models, m, options.model)));
+        }
+      }
+      for (std::size_t k = 0; k < surface.params.size(); ++k) {
+        const double u = surface.params[k][0], v = surface.params[k][1];
+        if (!inside(u, v)) {
+          return fail(fmt::format("{}, row {}: ({}, {}) is outside the domain {} of {}", display_name(options.params),
+                                  k + 1, u, v, domain_text(view), model_name(*models, m, options.model)));
+        }
+      }
+      continue;
+    }
+    const Interval domain = domain_of(model);
+    for (const double u : curve.at) {
       if (!domain.contains(u)) {
         return fail(fmt::format("--at {} is outside the domain {} of {}", u, domain_text(domain),
                                 model_name(*models, m, options.model)));
       }
     }
-    for (std::size_t i = 0; i < params.values.size(); ++i) {
-      if (!domain.contains(params.values[i])) {
+    for (std::size_t i = 0; i < curve.params.values.size(); ++i) {
+      if (!domain.contains(curve.params.values[i])) {
         return fail(fmt::format("{}, line {}: {} is outside the domain {} of {}", display_name(options.params),
-                                params.lines[i], params.values[i], domain_text(domain),
+                                curve.params.lines[i], curve.params.values[i], domain_text(domain),
                                 model_name(*models, m, options.model)));
       }
     }
@@ -131,22 +304,15 @@ int run_eval(const EvalOptions& options) {
   std::vector<double> us, block;
   for (std::size_t m = 0; m < models->size(); ++m) {
     const Model& model = (*models)[m];
+    if (is_surface(model)) {
+      evaluate_surface(surface_view(model), surface, samples, out);
+      continue;
+    }
     const Interval domain = domain_of(model);
     us.clear();
-    us.reserve(per_model);
-    us.insert(us.end(), at_values.begin(), at_values.end());
-    us.insert(us.end(), params.values.begin(), params.values.end());
-    // N evenly spaced parameters, as numpy.linspace(lower, upper, N):
-    // lower + (upper - lower) i / (N - 1), the product formed first so that
-    // for the integer domains of this version each u is the correctly rounded
-    // quotient; the last one is exactly `upper`, and N = 1 gives `lower`.
-    const double width = domain.upper - domain.lower;
-    for (std::size_t i = 0; i < samples; ++i) {
-      const bool last = samples > 1 && i + 1 == samples;
-      us.push_back(samples == 1 ? domain.lower
-                   : last       ? domain.upper
-                                : domain.lower + width * static_cast<double>(i) / static_cast<double>(samples - 1));
-    }
+    us.insert(us.end(), curve.at.begin(), curve.at.end());
+    us.insert(us.end(), curve.params.values.begin(), curve.params.values.end());
+    append_samples(us, domain, samples);
 
     const auto d = static_cast<std::size_t>(dimension_of(model));
     constexpr std::size_t kBlock = 4096;  // parameters per batch: bounded scratch memory
@@ -154,11 +320,11 @@ int run_eval(const EvalOptions& options) {
       const std::size_t count = std::min(kBlock, us.size() - start);
       block.resize(count * d);
       const std::span<const double> chunk(us.data() + start, count);
-      if (derivative == 0) {
+      if (curve.derivative == 0) {
         points_at(model, chunk, block);
       } else {
         for (std::size_t i = 0; i < count; ++i) {
-          const Point value = derivative_at(model, chunk[i], derivative);
+          const Point value = derivative_at(model, chunk[i], curve.derivative);
           std::copy(value.begin(), value.end(), block.begin() + static_cast<std::ptrdiff_t>(i * d));
         }
       }
@@ -185,25 +351,30 @@ void add_eval_command(CLI::App& app, int& status) {
   auto options = std::make_shared<EvalOptions>();
   CLI::App* eval = app.add_subcommand(
       "eval",
-      "Points (or K-th derivatives) of the curves in MODEL at the given parameters, as CSV: one point per line, "
-      "coordinates separated by ',', each the shortest text that reads back to the same double. Parameters must lie "
-      "in the model's domain ([0,1] for bezier, [0,m] for piecewise_bezier with m pieces, [t_p, t_{n+1}] for a "
-      "bspline of degree p with n+1 control points). For several models, each "
-      "is evaluated in order at the same parameters and the lines follow one another.");
+      "Points (or derivatives) of the curves and surfaces in MODEL at the given parameters, as CSV: one point per "
+      "line, coordinates separated by ',', each the shortest text that reads back to the same double. Parameters "
+      "must lie in the model's domain ([0,1] for bezier, [0,m] for piecewise_bezier with m pieces, [t_p, t_{n+1}] "
+      "for a bspline of degree p with n+1 control points; for a surface the rectangle of its u and v domains, "
+      "[0,1] x [0,1] for bezier_surface and coons). A surface takes --at u,v, two-column --params u,v, an N x N "
+      "--samples grid (u the slow index: line a*N+b is S(u_a, v_b)) and --derivative ku,kv for the partial "
+      "derivative d^(ku+kv)S / du^ku dv^kv. The lines follow the order --at, --params, --samples. For several "
+      "models, each is evaluated in order at the same parameters and the lines follow one another.");
   eval->add_option("MODEL", options->model,
                    "Model JSON, or a CSV point set taken as the control polygon of one Bézier curve (by extension "
                    ".json/.csv, otherwise JSON when the text starts with '{')")
       ->required();
-  eval->add_option("--at", options->at, "Evaluate at parameter T (repeat for several; in the order given)")
-      ->type_name("T")
+  eval->add_option("--at", options->at, "Evaluate at parameter T of a curve, or u,v of a surface (repeat for several; in the order given)")
+      ->type_name("T|u,v")
       ->allow_extra_args(false);
-  eval->add_option("--params", options->params, "Evaluate at the parameters of a one-column CSV file, in order")
+  eval->add_option("--params", options->params, "Evaluate at the parameters of a CSV file, in order: one column T for a curve, two columns u,v for a surface")
       ->type_name("FILE.csv");
   eval->add_option("--samples", options->samples,
-                   "Evaluate at N evenly spaced parameters over the whole domain, ends included (N = 1: the start)")
+                   "Evaluate at N evenly spaced parameters over the whole domain, ends included (N = 1: the start); N x N for a "
+                   "surface, u the slow index")
       ->type_name("N");
-  eval->add_option("--derivative", options->derivative, "Print K-th derivatives instead of points (K = 0: points)")
-      ->type_name("K");
+  eval->add_option("--derivative", options->derivative, "Print K-th derivatives instead of points (K = 0: points); for a surface ku,kv, the partial derivative "
+                   "d^(ku+kv)S / du^ku dv^kv (0 or 0,0: points)")
+      ->type_name("K|ku,kv");
   eval->add_option("-o,--output", options->output, "Write to FILE (atomically) instead of standard output")
       ->type_name("FILE");
   eval->callback([options, &status] { status = run_eval(*options); });

@@ -3,13 +3,16 @@
 // figure atomically; on bad input nothing is written.
 #include <fmt/format.h>
 
+#include <cmath>
 #include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/render/plots.hpp"
+#include "casteljau/render/surface_plots.hpp"
 #include "casteljau/render/write.hpp"
 #include "commands.hpp"
 
@@ -26,6 +29,8 @@ struct PlotCommandOptions {
   bool basis = false;
   bool tangents = false;
   bool points_only = false;
+  std::string view;
+  int iso_curves = 11;
 };
 
 std::string lowercase_extension(const std::string& path) {
@@ -87,6 +92,39 @@ int run_plot(const PlotCommandOptions& options) {
     if (!source) return fail(source.error());
     sources.push_back(std::move(*source));
   }
+  // Surfaces: their own figure (iso-curves, control nets; PNG and PDF add a
+  // shaded image). Curve-only options do not apply to them.
+  bool any_surface = false;
+  for (const auto& source : sources)
+    for (const auto& model : source.models) any_surface = any_surface || is_surface(model);
+  if (!options.view.empty() && !any_surface) return fail("--view applies to surfaces, the inputs hold none");
+  if (any_surface) {
+    for (const auto& [given, name] : {std::pair{!options.construction.empty(), "--construction"},
+                                      std::pair{options.comb, "--comb"}, std::pair{options.basis, "--basis"},
+                                      std::pair{options.tangents, "--tangents"}}) {
+      if (given) return fail(fmt::format("{} applies to curves, not to surfaces", name));
+    }
+    render::SurfacePlotOptions surface;
+    surface.control_net = options.control_polygon;
+    surface.control_points = options.points;
+    if (options.iso_curves < 2 || options.iso_curves > 1000)
+      return fail(fmt::format("--iso-curves: {} is not in [2, 1000]", options.iso_curves));
+    surface.iso_curves = options.iso_curves;
+    if (!options.view.empty()) {
+      const auto comma = options.view.find(',');
+      if (comma == std::string::npos) return fail(fmt::format("--view '{}': expected azimuth,elevation in degrees", options.view.substr(0, 60)));
+      auto azimuth = parse_number(options.view.substr(0, comma));
+      if (!azimuth) return fail("--view: azimuth " + azimuth.error().message);
+      auto elevation = parse_number(options.view.substr(comma + 1));
+      if (!elevation) return fail("--view: elevation " + elevation.error().message);
+      if (!(std::abs(*elevation) <= 90.0)) return fail(fmt::format("--view: elevation {} is not in [-90, 90]", *elevation));
+      surface.view = render::ViewAngles{*azimuth, *elevation};
+    }
+    auto figure = render::surface_plot_figure(sources, surface, extension != ".svg");
+    if (!figure) return fail(figure.error());
+    if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
+    return 0;
+  }
   auto figure = render::plot_figure(sources, plot);
   if (!figure) return fail(figure.error());
   if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
@@ -101,7 +139,10 @@ void add_plot_command(CLI::App& app, int& status) {
       "plot",
       "Draws curves and point sets into an SVG, PNG or PDF figure (chosen by the extension of -o). Every curve is "
       "drawn as a polyline within a quarter pixel of it (casteljau's own flattening). A CSV point set is the control "
-      "polygon of one Bézier curve (as for eval) unless --points-only; 3D curves are projected on the x, y plane.");
+      "polygon of one Bézier curve (as for eval) unless --points-only; 3D curves are projected on the x, y plane. "
+      "Surfaces (drawn apart from curves) are seen in an orthographic view (--view; surfaces in R^2 in their "
+      "plane): their iso-curves, with --control-polygon their control nets, with --points their control points; "
+      "PNG and PDF add a panel with the surfaces tessellated and shaded (Lambert, painter's algorithm).");
   plot->add_option("INPUT", options->inputs, "Model JSON (.json) or CSV point set (.csv); several are drawn together")
       ->required();
   plot->add_option("-o,--output", options->output, "The figure to write: FILE.svg, FILE.png or FILE.pdf")
@@ -116,6 +157,13 @@ void add_plot_command(CLI::App& app, int& status) {
   plot->add_flag("--basis", options->basis, "Add a panel with the basis of the first curve: Bernstein of its degree, or the B-spline basis of its knots for a bspline model");
   plot->add_flag("--tangents", options->tangents, "Draw the end tangents along the first and last legs (blue)");
   plot->add_flag("--points-only", options->points_only, "Draw CSV point sets as points only, not as a curve");
+  plot->add_option("--view", options->view,
+                   "Surfaces: the direction they are seen from, azimuth,elevation in degrees (matplotlib's view_init; "
+                   "default -60,30), an orthographic projection")
+      ->type_name("AZ,EL");
+  plot->add_option("--iso-curves", options->iso_curves,
+                   "Surfaces: iso-curves per direction, evenly spaced over the domain, ends included (default 11)")
+      ->type_name("N");
   plot->callback([options, &status] { status = run_plot(*options); });
 }
 

@@ -1,6 +1,8 @@
 #include "casteljau/io/model.hpp"
 
 #include <cassert>
+#include <cstdlib>
+#include <type_traits>
 
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bspline/evaluate.hpp"
@@ -16,21 +18,46 @@ struct Overloaded : F... {
 template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
+/// True for the curve alternatives of Model.
+template <class T>
+constexpr bool is_curve_type =
+    std::is_same_v<T, BezierCurve> || std::is_same_v<T, PiecewiseBezierCurve> || std::is_same_v<T, BSplineCurve>;
+
 }  // namespace
 
+bool is_surface(const Model& model) {
+  return std::visit([](const auto& m) { return !is_curve_type<std::decay_t<decltype(m)>>; }, model);
+}
+
+SurfaceView surface_view(const Model& model) {
+  assert(is_surface(model));
+  return std::visit(
+      [](const auto& m) -> SurfaceView {
+        using T = std::decay_t<decltype(m)>;
+        if constexpr (is_curve_type<T>) {
+          // Unreachable by the precondition; a view of nothing would dangle,
+          // so the release build stops here too.
+          std::abort();
+        } else {
+          return SurfaceView(m);
+        }
+      },
+      model);
+}
+
 Interval domain_of(const Model& model) {
-  return std::visit(Overloaded{[](const BezierCurve&) {
-                                 return Interval{0.0, 1.0};
-                               },
+  assert(!is_surface(model));
+  return std::visit(Overloaded{[](const BezierCurve&) { return Interval{0.0, 1.0}; },
                                [](const PiecewiseBezierCurve& c) {
                                  return Interval{0.0, static_cast<double>(c.size())};
                                },
-                               [](const BSplineCurve& c) { return c.domain(); }},
+                               [](const BSplineCurve& c) { return c.domain(); },
+                               [](const auto&) { return Interval{0.0, 1.0}; }},
                     model);
 }
 
 int dimension_of(const Model& model) {
-  return std::visit([](const auto& curve) { return curve.dimension(); }, model);
+  return std::visit([](const auto& m) { return m.dimension(); }, model);
 }
 
 std::size_t control_point_count(const Model& model) {
@@ -40,24 +67,44 @@ std::size_t control_point_count(const Model& model) {
                                  for (const auto& piece : c.pieces()) count += piece.control_points().size();
                                  return count;
                                },
-                               [](const BSplineCurve& c) { return c.control_points().size(); }},
+                               [](const BSplineCurve& c) { return c.control_points().size(); },
+                               [](const BezierSurface& s) { return s.control_net().points().size(); },
+                               [](const BSplineSurface& s) { return s.control_net().points().size(); },
+                               [](const CoonsPatch& p) {
+                                 return p.u0().control_points().size() + p.u1().control_points().size() +
+                                        p.v0().control_points().size() + p.v1().control_points().size();
+                               }},
                     model);
 }
 
 void points_at(const Model& model, std::span<const double> us, std::span<double> out) {
+  assert(!is_surface(model));
   assert(out.size() == us.size() * static_cast<std::size_t>(dimension_of(model)));
-  std::visit([&](const auto& curve) { points_at(curve, us, out); }, model);
+  std::visit(
+      [&](const auto& m) {
+        if constexpr (is_curve_type<std::decay_t<decltype(m)>>) points_at(m, us, out);
+      },
+      model);
 }
 
 Point derivative_at(const Model& model, double u, int order) {
   assert(order >= 0);
-  return std::visit([&](const auto& curve) { return derivative_at(curve, u, order); }, model);
+  assert(!is_surface(model));
+  return std::visit(
+      [&](const auto& m) -> Point {
+        if constexpr (is_curve_type<std::decay_t<decltype(m)>>) return derivative_at(m, u, order);
+        else return Point{};
+      },
+      model);
 }
 
 const char* type_name(const Model& model) {
   return std::visit(Overloaded{[](const BezierCurve&) { return "bezier"; },
                                [](const PiecewiseBezierCurve&) { return "piecewise_bezier"; },
-                               [](const BSplineCurve&) { return "bspline"; }},
+                               [](const BSplineCurve&) { return "bspline"; },
+                               [](const BezierSurface&) { return "bezier_surface"; },
+                               [](const BSplineSurface&) { return "bspline_surface"; },
+                               [](const CoonsPatch&) { return "coons"; }},
                     model);
 }
 

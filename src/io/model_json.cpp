@@ -6,7 +6,9 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <utility>
 
+#include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
@@ -256,7 +258,8 @@ class Checker {
 
   Expected<Model> model(const json& value, const std::string& path) {
     if (!value.is_object()) return at(path, "expected a model object, found " + describe(value));
-    if (!value.contains("type")) return at(path, "missing field 'type' (bezier, piecewise_bezier, bspline)");
+    if (!value.contains("type")) return at(path,
+                "missing field 'type' (bezier, piecewise_bezier, bspline, bezier_surface, bspline_surface, coons)");
     const json& type = value["type"];
     if (!type.is_string()) return at(member(path, "type"), "expected a string, found " + describe(type));
     const auto& name = type.get_ref<const std::string&>();
@@ -268,11 +271,9 @@ class Checker {
     }
     if (name == "piecewise_bezier") return piecewise(value, path);
     if (name == "bspline") return bspline(value, path);
-    if (name == "bezier_surface" || name == "bspline_surface" || name == "coons") {
-      return at(member(path, "type"), "the model type " + in_quotes(name) +
-                                          " is not supported by this version of casteljau (supported: bezier, "
-                                          "piecewise_bezier, bspline)");
-    }
+    if (name == "bezier_surface") return bezier_surface(value, path);
+    if (name == "bspline_surface") return bspline_surface(value, path);
+    if (name == "coons") return coons(value, path);
     return at(member(path, "type"), "unknown model type " + in_quotes(name) +
                                         " (model JSON version 1 has bezier, piecewise_bezier, bspline, "
                                         "bezier_surface, bspline_surface, coons)");
@@ -380,6 +381,254 @@ class Checker {
     auto curve = BSplineCurve::make(degree, std::move(knots), std::move(*points), std::move(*weights));
     if (!curve) return at(path, curve.error().message);  // checked above; kept as a safety net
     return Model{std::move(*curve)};
+  }
+
+  // --- surfaces ------------------------------------------------------------
+
+  /// A control net control_points[i][j]: a non-empty array of rows (i along
+  /// u), each a non-empty array of points (j along v), every row as long as
+  /// row 0 and every point of one dimension.
+  Expected<ControlNet> net(const json& list, const std::string& path) {
+    if (!list.is_array()) return at(path, "expected an array of rows of points, found " + describe(list));
+    if (list.empty()) return at(path, "the control net is empty, a surface needs at least one row of control points");
+    std::size_t columns = 0;
+    int dimension = 0;
+    std::vector<double> coordinates;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string row_path = element(path, i);
+      const json& row = list[i];
+      if (!row.is_array()) return at(row_path, "expected a row (an array of points), found " + describe(row));
+      if (row.empty()) return at(row_path, "the row is empty, every row of a control net needs at least one point");
+      if (i == 0) {
+        columns = row.size();
+      } else if (row.size() != columns) {
+        return at(row_path, fmt::format("row {} has {} point{}, row 0 has {} (a control net is rectangular)", i,
+                                        row.size(), row.size() == 1 ? "" : "s", columns));
+      }
+      auto points = this->points(row, row_path);
+      if (!points) return points.error();
+      if (i == 0) {
+        dimension = points->dimension();
+        coordinates.reserve(list.size() * columns * static_cast<std::size_t>(dimension));
+      } else if (points->dimension() != dimension) {
+        return at(element(row_path, 0),
+                  fmt::format("{} coordinate{}, but {} has {} (all points must have the same dimension)",
+                              points->dimension(), points->dimension() == 1 ? "" : "s",
+                              element(element(path, 0), 0), dimension));
+      }
+      for (std::size_t j = 0; j < points->size(); ++j) {
+        const auto point = (*points)[j];
+        coordinates.insert(coordinates.end(), point.begin(), point.end());
+      }
+    }
+    return ControlNet::from_trusted(list.size(), columns,
+                                    PointArray::from_trusted(dimension, std::move(coordinates)));
+  }
+
+  /// The optional weights[i][j] of a surface, one per control point of the
+  /// net (rows x columns), each finite and > 0; returned row by row (empty
+  /// when the field is absent).
+  Expected<std::vector<double>> net_weights(const json& value, const std::string& path, std::size_t rows,
+                                            std::size_t columns) const {
+    std::vector<double> weights;
+    if (!value.contains("weights")) return weights;
+    const std::string weights_path = member(path, "weights");
+    const json& list = value["weights"];
+    if (!list.is_array()) return at(weights_path, "expected an array of rows of numbers, found " + describe(list));
+    if (list.size() != rows) {
+      return at(weights_path, fmt::format("{} row{} of weights for a control net of {} row{}, expected one weight "
+                                          "per control point",
+                                          list.size(), list.size() == 1 ? "" : "s", rows, rows == 1 ? "" : "s"));
+    }
+    weights.reserve(rows * columns);
+    for (std::size_t i = 0; i < rows; ++i) {
+      const std::string row_path = element(weights_path, i);
+      const json& row = list[i];
+      if (!row.is_array()) return at(row_path, "expected a row (an array of numbers), found " + describe(row));
+      if (row.size() != columns) {
+        return at(row_path, fmt::format("row {} has {} weight{}, the control net has {} point{} per row", i,
+                                        row.size(), row.size() == 1 ? "" : "s", columns, columns == 1 ? "" : "s"));
+      }
+      for (std::size_t j = 0; j < columns; ++j) {
+        auto w = number(row[j], element(row_path, j));
+        if (!w) return w.error();
+        if (!(*w > 0.0))
+          return at(element(row_path, j), fmt::format("the weight {} is not > 0, weights must be positive", *w));
+        weights.push_back(*w);
+      }
+    }
+    return weights;
+  }
+
+  Expected<Model> bezier_surface(const json& value, const std::string& path) {
+    if (auto ok = known_fields(value, path, {"type", "control_points", "weights"}, "a bezier_surface model"); !ok)
+      return ok.error();
+    if (!value.contains("control_points")) return at(path, "missing field 'control_points'");
+    auto net = this->net(value["control_points"], member(path, "control_points"));
+    if (!net) return net.error();
+    auto weights = net_weights(value, path, net->rows(), net->columns());
+    if (!weights) return weights.error();
+    auto surface = BezierSurface::make(std::move(*net), std::move(*weights));
+    if (!surface) return at(path, surface.error().message);
+    return Model{std::move(*surface)};
+  }
+
+  /// One degree of a pair: a whole number in [0, kMaxBSplineDegree].
+  Expected<int> whole_degree(const json& value, const std::string& path) const {
+    if (!value.is_number()) return at(path, "expected a whole number, found " + describe(value));
+    const double degree = value.get<double>();
+    if (!(degree >= 0.0 && degree <= tolerances::kMaxBSplineDegree) || degree != std::floor(degree)) {
+      return at(path, fmt::format("the degree {} is not a whole number in [0, {}]", degree,
+                                  tolerances::kMaxBSplineDegree));
+    }
+    return static_cast<int>(degree);
+  }
+
+  /// The knot vector of one direction of a surface: `count` control points
+  /// along it and `degree`; full (count + degree + 1 knots) or the
+  /// Rhino/openNURBS convention (count + degree - 1), checked as for curves.
+  Expected<std::vector<double>> direction_knots(const json& list, const std::string& path, const char* direction,
+                                                int degree, std::size_t count) const {
+    if (!list.is_array()) return at(path, "expected an array of numbers, found " + describe(list));
+    const std::size_t full = count + static_cast<std::size_t>(degree) + 1;
+    const std::size_t rhino = count + static_cast<std::size_t>(degree) - 1;
+    if (list.size() != full && list.size() != rhino) {
+      return at(path, fmt::format("{} knot{} for {} control points along {} of degree {}, expected {} (control "
+                                  "points + degree + 1), or {} in the Rhino/openNURBS convention",
+                                  list.size(), list.size() == 1 ? "" : "s", count, direction, degree, full, rhino));
+    }
+    std::vector<double> knots;
+    knots.reserve(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      auto knot = number(list[i], element(path, i));
+      if (!knot) return knot.error();
+      knots.push_back(*knot);
+    }
+    if (knots.size() == full) {
+      if (auto ok = validate_knots(knots, degree, count); !ok) return at(path, ok.error().message);
+      return knots;
+    }
+    auto converted = knots_from_rhino(knots, degree, count);
+    if (!converted) return at(path, converted.error().message + " (read in the Rhino/openNURBS convention)");
+    return converted;
+  }
+
+  /// A B-spline or NURBS surface: degree [p, q], knots [[u knots], [v
+  /// knots]], control_points[i][j], optional weights[i][j].
+  Expected<Model> bspline_surface(const json& value, const std::string& path) {
+    if (auto ok = known_fields(value, path, {"type", "degree", "knots", "control_points", "weights"},
+                               "a bspline_surface model");
+        !ok) {
+      return ok.error();
+    }
+    for (const char* field : {"degree", "knots", "control_points"}) {
+      if (!value.contains(field)) return at(path, fmt::format("missing field '{}'", field));
+    }
+    const std::string degree_path = member(path, "degree");
+    const json& degree_list = value["degree"];
+    if (!degree_list.is_array() || degree_list.size() != 2) {
+      return at(degree_path, "expected [p, q], the degrees in u and in v, found " +
+                                 (degree_list.is_array() ? fmt::format("an array of {} elements", degree_list.size())
+                                                         : describe(degree_list)));
+    }
+    auto p = whole_degree(degree_list[0], element(degree_path, 0));
+    if (!p) return p.error();
+    auto q = whole_degree(degree_list[1], element(degree_path, 1));
+    if (!q) return q.error();
+
+    const std::string points_path = member(path, "control_points");
+    auto net = this->net(value["control_points"], points_path);
+    if (!net) return net.error();
+    if (net->rows() < static_cast<std::size_t>(*p) + 1) {
+      return at(points_path, fmt::format("{} row{} of control points, a B-spline surface of degree {} in u needs at "
+                                         "least {}",
+                                         net->rows(), net->rows() == 1 ? "" : "s", *p, *p + 1));
+    }
+    if (net->columns() < static_cast<std::size_t>(*q) + 1) {
+      return at(points_path, fmt::format("{} control point{} per row, a B-spline surface of degree {} in v needs at "
+                                         "least {}",
+                                         net->columns(), net->columns() == 1 ? "" : "s", *q, *q + 1));
+    }
+
+    const std::string knots_path = member(path, "knots");
+    const json& knot_lists = value["knots"];
+    if (!knot_lists.is_array() || knot_lists.size() != 2) {
+      return at(knots_path, "expected [[u knots], [v knots]], two arrays of numbers, found " +
+                                (knot_lists.is_array() ? fmt::format("an array of {} elements", knot_lists.size())
+                                                       : describe(knot_lists)));
+    }
+    auto knots_u = direction_knots(knot_lists[0], element(knots_path, 0), "u", *p, net->rows());
+    if (!knots_u) return knots_u.error();
+    auto knots_v = direction_knots(knot_lists[1], element(knots_path, 1), "v", *q, net->columns());
+    if (!knots_v) return knots_v.error();
+
+    auto weights = net_weights(value, path, net->rows(), net->columns());
+    if (!weights) return weights.error();
+    auto surface = BSplineSurface::make(*p, *q, std::move(*knots_u), std::move(*knots_v), std::move(*net),
+                                        std::move(*weights));
+    if (!surface) return at(path, surface.error().message);  // checked above; kept as a safety net
+    return Model{std::move(*surface)};
+  }
+
+  /// A Coons patch: optional blending (linear, the default, or cubic) and the
+  /// four boundary curves u0, u1, v0, v1, each a curve model of any kind,
+  /// written as a B-spline curve (CoonsPatch::make maps each to [0,1]).
+  Expected<Model> coons(const json& value, const std::string& path) {
+    if (auto ok = known_fields(value, path, {"type", "blending", "boundaries"}, "a coons model"); !ok)
+      return ok.error();
+    CoonsBlending blending = CoonsBlending::linear;
+    if (value.contains("blending")) {
+      const std::string blending_path = member(path, "blending");
+      const json& name = value["blending"];
+      if (!name.is_string()) return at(blending_path, "expected \"linear\" or \"cubic\", found " + describe(name));
+      const auto& text = name.get_ref<const std::string&>();
+      if (text == "linear") {
+        blending = CoonsBlending::linear;
+      } else if (text == "cubic") {
+        blending = CoonsBlending::cubic;
+      } else {
+        return at(blending_path, "unknown blending " + in_quotes(text) + " (linear or cubic)");
+      }
+    }
+    if (!value.contains("boundaries")) return at(path, "missing field 'boundaries' (u0, u1, v0, v1)");
+    const std::string boundaries_path = member(path, "boundaries");
+    const json& boundaries = value["boundaries"];
+    if (!boundaries.is_object()) {
+      return at(boundaries_path, "expected an object {\"u0\": curve, \"u1\": curve, \"v0\": curve, \"v1\": curve}, "
+                                 "found " + describe(boundaries));
+    }
+    if (auto ok = known_fields(boundaries, boundaries_path, {"u0", "u1", "v0", "v1"}, "the boundaries object of a coons model");
+        !ok) {
+      return ok.error();
+    }
+    std::vector<BSplineCurve> curves;
+    for (const char* name : {"u0", "u1", "v0", "v1"}) {
+      const std::string curve_path = member(boundaries_path, name);
+      if (!boundaries.contains(name)) {
+        return at(boundaries_path,
+                  fmt::format("missing boundary '{}' (a coons patch needs the four curves u0, u1, v0, v1)", name));
+      }
+      auto boundary = model(boundaries[name], curve_path);
+      if (!boundary) return boundary.error();
+      if (is_surface(*boundary)) {
+        return at(curve_path, fmt::format("a {} model cannot be a boundary, a coons boundary is a curve (bezier, "
+                                          "piecewise_bezier, bspline)",
+                                          type_name(*boundary)));
+      }
+      if (const auto* bezier = std::get_if<BezierCurve>(&*boundary)) {
+        curves.push_back(to_bspline(*bezier));
+      } else if (const auto* pieces = std::get_if<PiecewiseBezierCurve>(&*boundary)) {
+        auto spline = from_bezier_pieces(to_bezier_pieces(*pieces));
+        if (!spline) return at(curve_path, spline.error().message);
+        curves.push_back(std::move(*spline));
+      } else {
+        curves.push_back(std::get<BSplineCurve>(*boundary));
+      }
+    }
+    auto patch = CoonsPatch::make(std::move(curves[0]), std::move(curves[1]), std::move(curves[2]),
+                                  std::move(curves[3]), blending);
+    if (!patch) return at(boundaries_path, patch.error().message);
+    return Model{std::move(*patch)};
   }
 
   Expected<Model> piecewise(const json& value, const std::string& path) {
@@ -536,7 +785,85 @@ void write_bspline(fmt::memory_buffer& out, const BSplineCurve& curve) {
   out.push_back('}');
 }
 
+/// control_points[i][j] of a net, row by row.
+void write_net(fmt::memory_buffer& out, const ControlNet& net) {
+  out.push_back('[');
+  for (std::size_t i = 0; i < net.rows(); ++i) {
+    if (i > 0) out.push_back(',');
+    out.push_back('[');
+    for (std::size_t j = 0; j < net.columns(); ++j) {
+      if (j > 0) out.push_back(',');
+      const auto point = net(i, j);
+      write_numbers(out, point);
+    }
+    out.push_back(']');
+  }
+  out.push_back(']');
+}
+
+/// weights[i][j] from the row-by-row weights of a net.
+void write_net_weights(fmt::memory_buffer& out, std::span<const double> weights, std::size_t columns) {
+  out.push_back('[');
+  for (std::size_t i = 0; i * columns < weights.size(); ++i) {
+    if (i > 0) out.push_back(',');
+    write_numbers(out, weights.subspan(i * columns, columns));
+  }
+  out.push_back(']');
+}
+
+void write_bezier_surface(fmt::memory_buffer& out, const BezierSurface& surface) {
+  fmt::format_to(std::back_inserter(out), "{{\"type\":\"bezier_surface\",\"control_points\":");
+  write_net(out, surface.control_net());
+  if (surface.is_rational()) {
+    fmt::format_to(std::back_inserter(out), ",\"weights\":");
+    write_net_weights(out, surface.weights(), surface.control_net().columns());
+  }
+  out.push_back('}');
+}
+
+/// Always the full knot vectors, whatever convention was read.
+void write_bspline_surface(fmt::memory_buffer& out, const BSplineSurface& surface) {
+  fmt::format_to(std::back_inserter(out), "{{\"type\":\"bspline_surface\",\"degree\":[{},{}],\"knots\":[",
+                 surface.degree_u(), surface.degree_v());
+  write_numbers(out, surface.knots_u());
+  out.push_back(',');
+  write_numbers(out, surface.knots_v());
+  fmt::format_to(std::back_inserter(out), "],\"control_points\":");
+  write_net(out, surface.control_net());
+  if (surface.is_rational()) {
+    fmt::format_to(std::back_inserter(out), ",\"weights\":");
+    write_net_weights(out, surface.weights(), surface.control_net().columns());
+  }
+  out.push_back('}');
+}
+
+/// The boundaries as the B-spline curves the patch holds (on [0,1]).
+void write_coons(fmt::memory_buffer& out, const CoonsPatch& patch) {
+  fmt::format_to(std::back_inserter(out), "{{\"type\":\"coons\",\"blending\":\"{}\",\"boundaries\":{{",
+                 blending_name(patch.blending()));
+  const std::pair<const char*, const BSplineCurve*> boundaries[] = {
+      {"u0", &patch.u0()}, {"u1", &patch.u1()}, {"v0", &patch.v0()}, {"v1", &patch.v1()}};
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (k > 0) out.push_back(',');
+    fmt::format_to(std::back_inserter(out), "\"{}\":", boundaries[k].first);
+    write_bspline(out, *boundaries[k].second);
+  }
+  fmt::format_to(std::back_inserter(out), "}}}}");
+}
+
 void write_model(fmt::memory_buffer& out, const Model& model) {
+  if (const auto* surface = std::get_if<BezierSurface>(&model)) {
+    write_bezier_surface(out, *surface);
+    return;
+  }
+  if (const auto* surface = std::get_if<BSplineSurface>(&model)) {
+    write_bspline_surface(out, *surface);
+    return;
+  }
+  if (const auto* patch = std::get_if<CoonsPatch>(&model)) {
+    write_coons(out, *patch);
+    return;
+  }
   if (const auto* curve = std::get_if<BezierCurve>(&model)) {
     write_bezier(out, *curve);
     return;

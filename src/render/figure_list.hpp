@@ -29,4 +29,10 @@ inline Status append_figure(std::vector<GalleryFigure>& figures, Expected<Galler
   return {};
 }
 
+/// The surface figures of issue 5 (gallery_surfaces.cpp), numbered 30 to 34:
+/// a bicubic Bézier patch, a Coons patch with both blendings, B-spline
+/// surface local control, the NURBS sphere and torus, a tessellation at two
+/// tolerances. The first failure stops them with its message.
+Expected<std::vector<GalleryFigure>> surface_gallery_figures();
+
 }  // namespace casteljau::render::detail

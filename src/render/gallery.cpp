@@ -456,6 +456,9 @@ Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path
   auto interpolation = interpolation_gallery_figures(examples_dir);
   if (!interpolation) return interpolation.error();
   for (auto& f : *interpolation) figures.push_back(std::move(f));
+  auto surfaces = detail::surface_gallery_figures();
+  if (!surfaces) return surfaces.error();
+  for (auto& f : *surfaces) figures.push_back(std::move(f));
   return figures;
 }
 

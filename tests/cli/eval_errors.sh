@@ -14,11 +14,8 @@ expect_error "1e999" "overflow.json, line 1, column 48, control_points[1][1]: th
   eval "$work/overflow.json" --at 0
 model unknown.json '{"type": "bezier", "control_points": [[0,0]], "colour": "red"}'
 expect_error "unknown field" "unknown.json, the top level: unknown field 'colour'" eval "$work/unknown.json" --at 0
-for type in bezier_surface bspline_surface coons; do
-  model "$type.json" "{\"models\": [{\"type\": \"$type\"}]}"
-  expect_error "$type" "$type.json, models[0].type: the model type '$type' is not supported by this version" \
-    eval "$work/$type.json" --at 0
-done
+model coons.json '{"models": [{"type": "coons"}]}'
+expect_error "coons" "coons.json, models[0]: missing field 'boundaries' (u0, u1, v0, v1)" eval "$work/coons.json" --at 0,0
 model notanumber.json '{"models": [{"type": "bezier", "control_points": [[0,0]]}, {"type": "bezier", "control_points": [[0,1],[1,"a"]]}]}'
 expect_error "not a number" "notanumber.json, models[1].control_points[1][1]: expected a number, found the string 'a'" \
   eval "$work/notanumber.json" --at 0

@@ -21,7 +21,7 @@ for f in $links; do
   count=$((count + 1))
   check "linked file $f exists and is non-empty" '[ -s "$work/gallery/$f" ]'
 done
-check "index.html links at least 30 files (got $count)" '[ "$count" -ge 30 ]'
+check "index.html links at least 40 files (got $count)" '[ "$count" -ge 40 ]'
 
 # Each figure: an SVG and a PNG, the SVG an SVG document, the PNG a PNG.
 for svg in "$work"/gallery/*.svg; do
@@ -34,6 +34,10 @@ for svg in "$work"/gallery/*.svg; do
 done
 # The interpolation figures of issue 3 (23 to 29), each with a caption.
 for name in 23_head_interpolants 24_car_interpolants 25_runge 26_natural_splines 27_smoothing 28_head_methods 29_car_methods; do
+  check "figure $name is in the gallery" '[ -s "$work/gallery/$name.svg" ] && grep -q "<figure id=\"$name\">" "$work/gallery/index.html"'
+done
+# The surface figures of issue 5 (30 to 34), each with a caption.
+for name in 30_bezier_patch 31_coons_blendings 32_bspline_surface_local_control 33_nurbs_sphere_torus 34_tessellation_tolerances; do
   check "figure $name is in the gallery" '[ -s "$work/gallery/$name.svg" ] && grep -q "<figure id=\"$name\">" "$work/gallery/index.html"'
 done
 # No temporary files left behind.

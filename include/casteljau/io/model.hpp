@@ -14,39 +14,59 @@
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/core/interval.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/surfaces/bezier_surface.hpp"
+#include "casteljau/surfaces/bspline_surface.hpp"
+#include "casteljau/surfaces/coons.hpp"
+#include "casteljau/surfaces/surface_view.hpp"
 
 namespace casteljau {
 
 
-/// Every model kind of model JSON version 1 that this version implements:
-/// `bezier`, `piecewise_bezier`, `bspline` (B-spline or NURBS). Later layers
-/// (surfaces) add their types here.
-using Model = std::variant<BezierCurve, PiecewiseBezierCurve, BSplineCurve>;
+/// Every model kind of model JSON version 1: the curves `bezier`,
+/// `piecewise_bezier`, `bspline` (B-spline or NURBS) and the surfaces
+/// `bezier_surface`, `bspline_surface` (B-spline or NURBS) and `coons`.
+/// Curves come first: is_surface() tells the two families apart.
+using Model = std::variant<BezierCurve, PiecewiseBezierCurve, BSplineCurve, BezierSurface, BSplineSurface,
+                           CoonsPatch>;
 
-/// The model's parameter domain: [0,1] for a Bézier curve, [0,m] for m
-/// pieces, [t_p, t_{n+1}] for a B-spline of degree p with n+1 control points.
+/// True for the surface kinds (Bézier, B-spline/NURBS surface, Coons patch),
+/// false for the curves. The functions below marked "curves only" assert
+/// !is_surface(model); front ends branch on this first.
+bool is_surface(const Model& model);
+
+/// A non-owning view of a surface model (asserts is_surface(model)); the
+/// model must outlive the view. All surface evaluation of the front ends goes
+/// through it: domain_u/domain_v, point_at, partial_derivative_at, grids.
+SurfaceView surface_view(const Model& model);
+
+/// Curves only: the model's parameter domain: [0,1] for a Bézier curve, [0,m]
+/// for m pieces, [t_p, t_{n+1}] for a B-spline of degree p with n+1 control
+/// points. A surface has two domains: surface_view(model).domain_u(), domain_v().
 Interval domain_of(const Model& model);
 
-/// The dimension of the space the model lives in.
+/// The dimension of the space the model (curve or surface) lives in.
 int dimension_of(const Model& model);
 
 /// The number of control points of the model (all pieces together; a point
-/// shared by two pieces counts twice; n+1 for a B-spline).
+/// shared by two pieces counts twice; n+1 for a B-spline; rows x columns for
+/// a Bézier or B-spline surface; for a Coons patch, those of its four
+/// boundary curves together).
 std::size_t control_point_count(const Model& model);
 
-/// The model's points at the parameters `us` (any order) into out (size
+/// Curves only: the model's points at the parameters `us` (any order) into out (size
 /// us.size() * d), bit for bit as point_at. Parameters outside the domain
 /// extrapolate (see bezier/evaluate.hpp, bspline/evaluate.hpp): front ends
 /// check them first.
 void points_at(const Model& model, std::span<const double> us, std::span<double> out);
 
-/// The k-th derivative at u (k = 0: the point), k >= 0. For a piecewise curve
+/// Curves only: the k-th derivative at u (k = 0: the point), k >= 0. For a piecewise curve
 /// at a junction u = i, the derivative of piece i (the one to the right), and
 /// at u = m that of the last piece; for a B-spline at a knot, that of the span
 /// to the right, and at the end of the domain that of the last span.
 Point derivative_at(const Model& model, double u, int order);
 
-/// The model's type name in model JSON ("bezier", "piecewise_bezier", "bspline").
+/// The model's type name in model JSON ("bezier", "piecewise_bezier",
+/// "bspline", "bezier_surface", "bspline_surface", "coons").
 const char* type_name(const Model& model);
 
 }  // namespace casteljau
