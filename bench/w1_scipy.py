@@ -24,31 +24,13 @@ import numpy as np
 from scipy.interpolate import BSpline
 
 from benchmark_json import write_benchmark_json
+from seeded_data import splitmix_units, clamped_uniform_knots
 
 DEGREE = 3
 CONTROL_POINTS = 1000
 PARAMETERS = 1_000_000
 SCALE = 100.0
 BOUND = 1e-9
-GAMMA = np.uint64(0x9E3779B97F4A7C15)
-
-
-def splitmix_units(seed, count):
-    """count doubles in [0,1): splitmix64 from `seed`, 53 bits each (as in C++)."""
-    with np.errstate(over="ignore"):
-        state = np.uint64(seed) + GAMMA * np.arange(1, count + 1, dtype=np.uint64)
-        z = state
-        z = (z ^ (z >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
-        z = (z ^ (z >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
-        z = z ^ (z >> np.uint64(31))
-    return (z >> np.uint64(11)).astype(np.float64) * 2.0**-53
-
-
-def clamped_uniform_knots(p, count):
-    n = count - 1
-    spans = n - p + 1
-    interior = [j / spans for j in range(1, spans)]
-    return np.array([0.0] * (p + 1) + interior + [1.0] * (p + 1))
 
 
 def de_boor(t, c, p, u):

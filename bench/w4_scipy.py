@@ -41,6 +41,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline, make_interp_spline
 
 from benchmark_json import write_benchmark_json
+from seeded_data import splitmix_units
 
 SIZES = (10_000, 1_000_000)
 DRIFT = np.array([0.1, 0.05, -0.02])
@@ -48,18 +49,7 @@ END_INTERVALS = 32
 SAMPLES = 2000
 BOUND = 1e-9
 MIN_SECONDS = 0.3
-GAMMA = np.uint64(0x9E3779B97F4A7C15)
 CONDITIONS = ("natural", "clamped", "not-a-knot", "periodic")
-
-
-def splitmix_units(seed, count):
-    """count doubles in [0,1): splitmix64 from `seed`, 53 bits each (as in C++)."""
-    with np.errstate(over="ignore"):
-        z = np.uint64(seed) + GAMMA * np.arange(1, count + 1, dtype=np.uint64)
-        z = (z ^ (z >> np.uint64(30))) * np.uint64(0xBF58476D1CE4E5B9)
-        z = (z ^ (z >> np.uint64(27))) * np.uint64(0x94D049BB133111EB)
-        z = z ^ (z >> np.uint64(31))
-    return (z >> np.uint64(11)).astype(np.float64) * 2.0**-53
 
 
 def make_case(n):

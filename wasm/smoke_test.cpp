@@ -1,5 +1,6 @@
-// Runs under node (compiled by em++): the Bézier core gives the seed's known
-// values in WebAssembly too. Prints one line per check; exit status 1 on any failure.
+// Runs under node (compiled by em++): the core layers (Bézier, B-spline,
+// interpolation, surfaces, tessellation) give known values in WebAssembly too. Prints one line per check; exit status 1 on any failure.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -12,6 +13,9 @@
 #include "casteljau/interpolation/parameterization.hpp"
 #include "casteljau/interpolation/spline_interpolation.hpp"
 #include "casteljau/ops/flatten.hpp"
+#include "casteljau/ops/tessellate.hpp"
+#include "casteljau/surfaces/evaluate.hpp"
+#include "casteljau/surfaces/revolution.hpp"
 
 namespace {
 
@@ -71,6 +75,24 @@ int main() {
   check(spline && std::abs(point_at(*spline, 2.5)[1] - 15.625) < 1e-12, "not-a-knot cubic reproduces y = x^3");
   const auto chords = parameter_values(graph, Parameterization::chord_length);
   check(chords && chords->back() == 1.0, "chord-length parameters end at 1");
+  // Surfaces: the exact NURBS sphere keeps its radius, and its tessellation
+  // closes up (the seam and the poles are shared).
+  const double center[3] = {1.0, -2.0, 0.5};
+  const auto sphere = make_sphere(center, 2.0);
+  check(sphere.has_value(), "NURBS sphere of radius 2");
+  if (sphere) {
+    double worst = 0.0;
+    for (int a = 0; a <= 8; ++a) {
+      for (int b = 0; b <= 8; ++b) {
+        const Point s = point_at(*sphere, sphere->domain_u().lerp(a / 8.0), sphere->domain_v().lerp(b / 8.0));
+        worst = std::max(worst, std::abs(std::hypot(s[0] - 1.0, s[1] + 2.0, s[2] - 0.5) - 2.0));
+      }
+    }
+    check(worst < 1e-14, "sphere points are at distance 2 from the centre");
+    const SurfaceView view(*sphere);
+    const auto mesh = tessellate(std::span<const SurfaceView>(&view, 1), Tolerance{0.01});
+    check(mesh && mesh_topology(*mesh).watertight(), "sphere tessellation is watertight");
+  }
   std::printf("%d failed\n", failures);
   return failures == 0 ? 0 : 1;
 }
