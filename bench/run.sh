@@ -7,9 +7,9 @@
 # Exits non-zero if a binary fails or a row reported an error (a benchmark
 # whose output check failed calls SkipWithError).
 #
-# W1/W2 rows of scipy come from bench/w1_scipy.py and W4 rows from
-# bench/w4_scipy.py (run by /usr/bin/python3, pinned the same way) when
-# Debian's scipy is installed.
+# W1/W2 rows of scipy come from bench/w1_scipy.py, W4 rows from
+# bench/w4_scipy.py and the W5 row from bench/w5_scipy.py (run by
+# /usr/bin/python3, pinned the same way) when Debian's scipy is installed.
 #
 # Environment: CASTELJAU_BENCH_DIR (default build-bench/bench),
 # CASTELJAU_BENCH_CPU (default 0), CASTELJAU_BENCH_OUT (default out/bench),
@@ -112,31 +112,28 @@ for binary in "${binaries[@]}"; do
   summarize "$json" || status=1
 done
 
-# scipy's rows for W1/W2 (bench/w1_scipy.py), when Debian's scipy is there.
-if [[ "W1/sorted/scipy-BSpline W1/random/scipy-BSpline W2/sorted/scipy-BSpline" =~ $filter ]] && \
-    /usr/bin/python3 -c "import scipy" >/dev/null 2>&1; then
-  json="$out_dir/w1_scipy.json"
-  echo "== w1_scipy.py -> $json"
-  if "${pin[@]}" /usr/bin/python3 bench/w1_scipy.py --repetitions 3 --out "$json" >"$out_dir/w1_scipy.txt" 2>&1; then
+# The scipy rows (bench/w<k>_scipy.py), when Debian's scipy is there and the
+# filter matches one of the script's row names: run_scipy SCRIPT "ROW NAMES"
+# [extra arguments]. W1/W2: BSpline; W4: make_interp_spline and CubicSpline;
+# W5: bisplev on the same knots and coefficients.
+run_scipy() {
+  local script="$1" rows="$2"
+  shift 2
+  [[ "$rows" =~ $filter ]] || return 0
+  /usr/bin/python3 -c "import scipy" >/dev/null 2>&1 || return 0
+  local json="$out_dir/${script%.py}.json"
+  echo "== $script -> $json"
+  if "${pin[@]}" /usr/bin/python3 "bench/$script" --repetitions 3 --out "$json" "$@" \
+      >"$out_dir/${script%.py}.txt" 2>&1; then
     summarize "$json" || status=1
   else
-    echo "   w1_scipy.py failed (see $out_dir/w1_scipy.txt)"
+    echo "   $script failed (see $out_dir/${script%.py}.txt)"
     summarize "$json" || true
     status=1
   fi
-fi
-# scipy's rows for W4 (bench/w4_scipy.py), likewise.
-if [[ "W4/n10000/scipy-make_interp_spline-natural W4/n1000000/scipy-CubicSpline-periodic" =~ $filter ]] && \
-    /usr/bin/python3 -c "import scipy" >/dev/null 2>&1; then
-  json="$out_dir/w4_scipy.json"
-  echo "== w4_scipy.py -> $json"
-  if "${pin[@]}" /usr/bin/python3 bench/w4_scipy.py --repetitions 3 --filter "$filter" --out "$json" \
-      >"$out_dir/w4_scipy.txt" 2>&1; then
-    summarize "$json" || status=1
-  else
-    echo "   w4_scipy.py failed (see $out_dir/w4_scipy.txt)"
-    summarize "$json" || true
-    status=1
-  fi
-fi
+}
+run_scipy w1_scipy.py "W1/sorted/scipy-BSpline W1/random/scipy-BSpline W2/sorted/scipy-BSpline"
+run_scipy w4_scipy.py "W4/n10000/scipy-make_interp_spline-natural W4/n1000000/scipy-CubicSpline-periodic" \
+  --filter "$filter"
+run_scipy w5_scipy.py "W5/grid/scipy-bisplev"
 exit $status
