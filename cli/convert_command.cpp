@@ -49,27 +49,6 @@ Model to_bezier_pieces_model(const Model& model) {
       model);
 }
 
-/// The model as a B-spline: a Bézier curve on the clamped knots 0^(n+1)
-/// 1^(n+1), a piecewise curve with its joints as knots of multiplicity p
-/// (the pieces must meet), a B-spline unchanged.
-Expected<Model> to_bspline_model(const Model& model) {
-  return std::visit(Overloaded{[](const BezierCurve& c) -> Expected<Model> { return Model{to_bspline(c)}; },
-                               [](const PiecewiseBezierCurve& c) -> Expected<Model> {
-                                 auto curve = from_bezier_pieces(to_bezier_pieces(c));
-                                 if (!curve) return curve.error();
-                                 return Model{std::move(*curve)};
-                               },
-                               [](const BSplineCurve& c) -> Expected<Model> { return Model{c}; },
-                               [](const BezierSurface& s) -> Expected<Model> { return Model{to_bspline_surface(s)}; },
-                               [](const BSplineSurface& s) -> Expected<Model> { return Model{s}; },
-                               [](const CoonsPatch& p) -> Expected<Model> {
-                                 auto surface = to_bspline_surface(p);
-                                 if (!surface) return surface.error();
-                                 return Model{std::move(*surface)};
-                               }},
-                    model);
-}
-
 /// "the piecewise_bezier model in 'm.json'" or "models[1] (piecewise_bezier) in 'm.json'".
 std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file) {
   if (models.size() == 1) return fmt::format("the {} model in '{}'", type_name(models[index]), display_name(file));
@@ -105,7 +84,7 @@ int run_convert(const ConvertOptions& options) {
     if (to_pieces) {
       converted.push_back(to_bezier_pieces_model(model));
     } else if (to_spline) {
-      auto spline = to_bspline_model(model);
+      auto spline = to_bspline(model);
       if (!spline) return fail(fmt::format("--to bspline: {}: {}", model_name(*models, m, options.model),
                                            spline.error().message));
       converted.push_back(std::move(*spline));

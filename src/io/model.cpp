@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 
 namespace casteljau {
@@ -105,6 +106,24 @@ const char* type_name(const Model& model) {
                                [](const BezierSurface&) { return "bezier_surface"; },
                                [](const BSplineSurface&) { return "bspline_surface"; },
                                [](const CoonsPatch&) { return "coons"; }},
+                    model);
+}
+
+Expected<Model> to_bspline(const Model& model) {
+  return std::visit(Overloaded{[](const BezierCurve& c) -> Expected<Model> { return Model{to_bspline(c)}; },
+                               [](const PiecewiseBezierCurve& c) -> Expected<Model> {
+                                 auto curve = from_bezier_pieces(to_bezier_pieces(c));
+                                 if (!curve) return curve.error();
+                                 return Model{std::move(*curve)};
+                               },
+                               [](const BSplineCurve& c) -> Expected<Model> { return Model{c}; },
+                               [](const BezierSurface& s) -> Expected<Model> { return Model{to_bspline_surface(s)}; },
+                               [](const BSplineSurface& s) -> Expected<Model> { return Model{s}; },
+                               [](const CoonsPatch& p) -> Expected<Model> {
+                                 auto surface = to_bspline_surface(p);
+                                 if (!surface) return surface.error();
+                                 return Model{std::move(*surface)};
+                               }},
                     model);
 }
 

@@ -615,15 +615,9 @@ class Checker {
                                           "piecewise_bezier, bspline)",
                                           type_name(*boundary)));
       }
-      if (const auto* bezier = std::get_if<BezierCurve>(&*boundary)) {
-        curves.push_back(to_bspline(*bezier));
-      } else if (const auto* pieces = std::get_if<PiecewiseBezierCurve>(&*boundary)) {
-        auto spline = from_bezier_pieces(to_bezier_pieces(*pieces));
-        if (!spline) return at(curve_path, spline.error().message);
-        curves.push_back(std::move(*spline));
-      } else {
-        curves.push_back(std::get<BSplineCurve>(*boundary));
-      }
+      auto spline = to_bspline(*boundary);
+      if (!spline) return at(curve_path, spline.error().message);
+      curves.push_back(std::get<BSplineCurve>(std::move(*spline)));
     }
     auto patch = CoonsPatch::make(std::move(curves[0]), std::move(curves[1]), std::move(curves[2]),
                                   std::move(curves[3]), blending);

@@ -69,4 +69,13 @@ Point derivative_at(const Model& model, double u, int order);
 /// "bspline", "bezier_surface", "bspline_surface", "coons").
 const char* type_name(const Model& model);
 
+/// The same model written as a B-spline (exact): a Bézier curve on the
+/// clamped knots 0^(n+1) 1^(n+1), a piecewise curve with its joints as knots
+/// of multiplicity p (from_bezier_pieces: the pieces must meet), a Bézier
+/// surface on clamped knots, a Coons patch by to_bspline_surface (polynomial
+/// boundaries only); B-splines unchanged. A curve gives a BSplineCurve, a
+/// surface a BSplineSurface. Errors are those of from_bezier_pieces and
+/// to_bspline_surface.
+Expected<Model> to_bspline(const Model& model);
+
 }  // namespace casteljau
