@@ -12,7 +12,8 @@ export NODE_PATH := /usr/share/nodejs
 PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark-dev \
   librapidcheck-dev libgmp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev \
   libcairo2-dev poppler-utils emscripten python3-dev python3-numpy python3-scipy \
-  python3-matplotlib python3-pytest python3-hypothesis python3-meshio
+  python3-matplotlib python3-pytest python3-hypothesis python3-meshio \
+  pybind11-dev python3-pybind11
 # Peers measured beside casteljau by `make bench`.
 BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
   libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev

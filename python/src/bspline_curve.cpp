@@ -1,0 +1,199 @@
+// BSplineCurve in Python: the class (polynomial and NURBS, as in C++) and its
+// evaluation, single and batch. The batch functions hand numpy's buffers to
+// the C++ kernels (include/casteljau/bspline/evaluate.hpp) without copies,
+// checking the parameters chunk by chunk and releasing the GIL.
+
+#include <pybind11/stl.h>
+
+#include <fmt/format.h>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "casteljau/bspline/bspline_curve.hpp"
+#include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/core/tolerance.hpp"
+
+namespace casteljau::python {
+
+namespace {
+
+/// A single parameter, checked like the batch ones.
+void check_parameter(const BSplineCurve& curve, double u, bool extrapolate) {
+  const double one[1] = {u};
+  for_each_checked_chunk(std::span<const double>(one), curve.domain(), extrapolate, "u",
+                         [](std::span<const double>, std::size_t) {});
+}
+
+void check_order(int order, int lowest) {
+  if (order < lowest || order > tolerances::kMaxDerivativeOrder) {
+    throw py::value_error(fmt::format("derivative order {} is outside {}..{}", order, lowest,
+                                      tolerances::kMaxDerivativeOrder));
+  }
+}
+
+DoubleArray point_array(const Point& point) { return to_numpy(std::span<const double>(point)); }
+
+}  // namespace
+
+void bind_bspline_curve(py::module_& module) {
+  py::class_<BSplineCurve>(module, "BSplineCurve",
+                           "A B-spline or NURBS curve of degree p in R^d: knots t_0..t_{n+p+1}, control points "
+                           "P_0..P_n as an (n+1, d) array and, for NURBS, one weight w_i > 0 per control point "
+                           "(The NURBS Book eq. 4.1). A value: operations return new curves.")
+      .def(py::init([](int degree, const py::object& knots, const py::object& control_points,
+                       const py::object& weights) {
+             std::vector<double> weight_values;
+             if (!weights.is_none()) weight_values = values_from(weights, "weights");
+             return unwrap(BSplineCurve::make(degree, values_from(knots, "knots"),
+                                              points_from(control_points, "control_points"),
+                                              std::move(weight_values)));
+           }),
+           py::arg("degree"), py::arg("knots"), py::arg("control_points"), py::arg("weights") = py::none(),
+           "Validates and builds (BSplineCurve::make): 0 <= degree, len(knots) == n + degree + 2 non-decreasing, "
+           "finite control points, weights None or n+1 finite values > 0. ValueError names the bad field.")
+      .def_property_readonly("degree", &BSplineCurve::degree, "p.")
+      .def_property_readonly("dimension", &BSplineCurve::dimension, "d, the number of coordinates.")
+      .def_property_readonly("knots", [](const BSplineCurve& c) { return to_numpy(c.knots()); },
+                             "t_0 .. t_{n+p+1} (a new array).")
+      .def_property_readonly("control_points", [](const BSplineCurve& c) { return to_numpy(c.control_points()); },
+                             "P_0 .. P_n as an (n+1, d) array (a new array).")
+      .def_property_readonly("weights", [](const BSplineCurve& c) { return to_numpy(c.weights()); },
+                             "w_0 .. w_n, an empty array for a polynomial curve.")
+      .def_property_readonly("is_rational", &BSplineCurve::is_rational, "True when the curve carries weights (NURBS).")
+      .def_property_readonly("domain", [](const BSplineCurve& c) { return py::make_tuple(c.domain().lower, c.domain().upper); },
+                             "(t_p, t_{n+1}), where the basis functions sum to one.")
+      .def("__eq__", [](const BSplineCurve& a, const BSplineCurve& b) { return a == b; }, py::is_operator())
+      .def("__repr__", [](const BSplineCurve& c) {
+        return fmt::format("BSplineCurve(degree={}, {} control points in R^{}{}, domain [{}, {}])", c.degree(),
+                           c.control_points().size(), c.dimension(), c.is_rational() ? ", rational" : "",
+                           c.domain().lower, c.domain().upper);
+      })
+      .def(py::pickle(
+          [](const BSplineCurve& c) {
+            return py::make_tuple(c.degree(), to_numpy(c.knots()), to_numpy(c.control_points()), to_numpy(c.weights()));
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 4) throw py::value_error("BSplineCurve pickle state must have 4 entries");
+            return unwrap(BSplineCurve::make(state[0].cast<int>(), values_from(state[1], "knots"),
+                                             points_from(state[2], "control_points"),
+                                             values_from(state[3], "weights")));
+          }));
+
+  module.def(
+      "point_at",
+      [](const BSplineCurve& curve, double u, bool extrapolate) {
+        check_parameter(curve, u, extrapolate);
+        return point_array(point_at(curve, u));
+      },
+      py::arg("curve"), py::arg("u"), py::kw_only(), py::arg("extrapolate") = false,
+      "C(u), a (d,) array, by de Boor's algorithm (The NURBS Book eq. 5.11; NURBS by A4.1). u must lie in "
+      "curve.domain unless extrapolate=True (the end pieces continued).");
+
+  module.def(
+      "points_at",
+      [](const BSplineCurve& curve, const py::object& us, const py::object& out, bool extrapolate) {
+        const DoubleArray parameters = parameters_from(us, "us");
+        const std::size_t d = static_cast<std::size_t>(curve.dimension());
+        DoubleArray result = output_array(static_cast<std::size_t>(parameters.shape(0)), d, out);
+        double* target = result.mutable_data();
+        for_each_checked_chunk(std::span<const double>(parameters.data(), static_cast<std::size_t>(parameters.size())),
+                               curve.domain(), extrapolate, "us",
+                               [&](std::span<const double> chunk, std::size_t offset) {
+                                 points_at(curve, chunk, std::span<double>(target + offset * d, chunk.size() * d));
+                               });
+        return result;
+      },
+      py::arg("curve"), py::arg("us"), py::kw_only(), py::arg("out") = py::none(), py::arg("extrapolate") = false,
+      "C(u) for every u of the (k,) array us, as a (k, d) array: the batch de Boor kernel (include/casteljau/"
+      "bspline/evaluate.hpp), no copy of a float64 us, the GIL released. out: an optional (k, d) C-contiguous "
+      "float64 array to write into (as numpy's out=). On ValueError out may be partly written.");
+
+  module.def(
+      "derivative_at",
+      [](const BSplineCurve& curve, double u, int order, bool extrapolate) {
+        check_order(order, 0);
+        check_parameter(curve, u, extrapolate);
+        return point_array(derivative_at(curve, u, order));
+      },
+      py::arg("curve"), py::arg("u"), py::arg("order") = 1, py::kw_only(), py::arg("extrapolate") = false,
+      "C^(k)(u), a (d,) array (The NURBS Book §3.3 and A3.2; NURBS by A4.2). At a knot, the span to the right.");
+
+  module.def(
+      "derivatives_at",
+      [](const BSplineCurve& curve, double u, int max_order, bool extrapolate) {
+        check_order(max_order, 0);
+        check_parameter(curve, u, extrapolate);
+        const std::vector<Point> values = derivatives_at(curve, u, max_order);
+        DoubleArray result({static_cast<py::ssize_t>(values.size()), static_cast<py::ssize_t>(curve.dimension())});
+        for (std::size_t k = 0; k < values.size(); ++k) {
+          std::copy(values[k].begin(), values[k].end(), result.mutable_data() + k * values[k].size());
+        }
+        return result;
+      },
+      py::arg("curve"), py::arg("u"), py::arg("max_order"), py::kw_only(), py::arg("extrapolate") = false,
+      "C(u), C'(u), ..., C^(max_order)(u) at one parameter, as a (max_order+1, d) array (A3.2/A4.2).");
+
+  module.def(
+      "derivatives_at",
+      [](const BSplineCurve& curve, const py::object& us, int order, const py::object& out, bool extrapolate) {
+        check_order(order, 0);
+        const DoubleArray parameters = parameters_from(us, "us");
+        const std::size_t d = static_cast<std::size_t>(curve.dimension());
+        DoubleArray result = output_array(static_cast<std::size_t>(parameters.shape(0)), d, out);
+        double* target = result.mutable_data();
+        for_each_checked_chunk(std::span<const double>(parameters.data(), static_cast<std::size_t>(parameters.size())),
+                               curve.domain(), extrapolate, "us",
+                               [&](std::span<const double> chunk, std::size_t offset) {
+                                 derivatives_at(curve, chunk, order, std::span<double>(target + offset * d, chunk.size() * d));
+                               });
+        return result;
+      },
+      py::arg("curve"), py::arg("us"), py::arg("order"), py::kw_only(), py::arg("out") = py::none(),
+      py::arg("extrapolate") = false,
+      "C^(order)(u) for every u of the (k,) array us, as a (k, d) array (the batch kernel for order 1).");
+
+  module.def(
+      "points_and_derivatives_at",
+      [](const BSplineCurve& curve, const py::object& us, bool extrapolate) {
+        const DoubleArray parameters = parameters_from(us, "us");
+        const std::size_t d = static_cast<std::size_t>(curve.dimension());
+        const std::size_t k = static_cast<std::size_t>(parameters.shape(0));
+        DoubleArray points = output_array(k, d, py::none()), derivatives = output_array(k, d, py::none());
+        double* point_target = points.mutable_data();
+        double* derivative_target = derivatives.mutable_data();
+        for_each_checked_chunk(std::span<const double>(parameters.data(), k), curve.domain(), extrapolate, "us",
+                               [&](std::span<const double> chunk, std::size_t offset) {
+                                 points_and_derivatives_at(curve, chunk,
+                                                           std::span<double>(point_target + offset * d, chunk.size() * d),
+                                                           std::span<double>(derivative_target + offset * d, chunk.size() * d));
+                               });
+        return py::make_tuple(points, derivatives);
+      },
+      py::arg("curve"), py::arg("us"), py::kw_only(), py::arg("extrapolate") = false,
+      "(C(u), C'(u)) for every u of us, two (k, d) arrays, from one de Boor triangle per parameter (W2).");
+
+  module.def(
+      "point_at_basis_sum",
+      [](const BSplineCurve& curve, double u, bool extrapolate) {
+        check_parameter(curve, u, extrapolate);
+        return point_array(point_at_basis_sum(curve, u));
+      },
+      py::arg("curve"), py::arg("u"), py::kw_only(), py::arg("extrapolate") = false,
+      "C(u) as sum N_{i,p}(u) P_i from the basis functions (The NURBS Book A3.1, A4.1): an independent check of "
+      "point_at.");
+
+  module.def(
+      "de_boor_net",
+      [](const BSplineCurve& curve, double u) {
+        check_parameter(curve, u, false);
+        const DeBoorNet net = de_boor_net(curve, u);
+        py::list levels;
+        for (const PointArray& level : net.levels) levels.append(to_numpy(level));
+        return py::make_tuple(net.span, levels);
+      },
+      py::arg("curve"), py::arg("u"),
+      "De Boor's algorithm at u as data (The NURBS Book §5.3, fig. 5.11): (span, levels), level r an (p+1-r, d) "
+      "array, level 0 the control points of the span, level p the point C(u).");
+}
+
+}  // namespace casteljau::python

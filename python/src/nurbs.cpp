@@ -1,0 +1,5 @@
+#include "bindings.hpp"
+
+namespace casteljau::python {
+void bind_nurbs(pybind11::module_&) {}
+}  // namespace casteljau::python
