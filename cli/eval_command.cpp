@@ -224,6 +224,10 @@ int run_eval(const EvalOptions& options) {
       auto kv = whole_number("--derivative",
                              std::string(trimmed(std::string_view(options.derivative).substr(comma + 1))), max_order);
       if (!kv) return fail(kv.error());
+      if (*ku + *kv > static_cast<std::size_t>(tolerances::kMaxSurfaceDerivativeOrder)) {
+        return fail(fmt::format("--derivative {},{}: ku + kv = {} is more than the limit of {} for a surface", *ku, *kv,
+                                *ku + *kv, tolerances::kMaxSurfaceDerivativeOrder));
+      }
       surface.derivative_u = static_cast<int>(*ku);
       surface.derivative_v = static_cast<int>(*kv);
     }

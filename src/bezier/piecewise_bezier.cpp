@@ -20,7 +20,9 @@ Expected<PiecewiseBezierCurve> PiecewiseBezierCurve::make(std::vector<BezierCurv
 
 std::pair<int, double> locate(const PiecewiseBezierCurve& curve, double u) {
   const int m = curve.size();
-  const int i = std::clamp(static_cast<int>(std::floor(u)), 0, m - 1);
+  // Clamped as a double first: converting a double beyond int's range to int
+  // is undefined behaviour, and extrapolation accepts any finite u.
+  const int i = static_cast<int>(std::clamp(std::floor(u), 0.0, static_cast<double>(m - 1)));
   return {i, u - i};
 }
 

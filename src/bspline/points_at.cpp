@@ -34,6 +34,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <utility>
 
 #if defined(__SSE2__)
@@ -132,6 +133,21 @@ inline bool all_within(Pack u, double lower, double upper) {
 #endif
 }
 
+/// Whether every lane lies in the closed [lower, upper] (false for NaN): the
+/// parameter check of points_at_within, on the pack the block loads anyway.
+inline bool all_inside(Pack u, double lower, double upper) {
+#if defined(__AVX512F__)
+  const __mmask8 inside = _mm512_cmp_pd_mask(u, _mm512_set1_pd(lower), _CMP_GE_OQ) &
+                          _mm512_cmp_pd_mask(u, _mm512_set1_pd(upper), _CMP_LE_OQ);
+  return inside == 0xFF;
+#else
+  const Lanes inside = (u >= broadcast(lower)) & (u <= broadcast(upper));
+  bool all = true;
+  for (int l = 0; l < kLanes; ++l) all &= inside[l] != 0;
+  return all;
+#endif
+}
+
 // --- spans ---------------------------------------------------------------------
 
 /// find_span's answer, found in O(1) for uniform knots: a guess from the
@@ -201,7 +217,14 @@ struct CurveData {
   const double* weights = nullptr;      // null for a polynomial curve
   int degree = 0;
   int dimension = 0;
+  Interval allowed{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
 };
+
+/// The index of the first of us[from..to) outside c.allowed, or `to`.
+inline std::size_t first_outside(const CurveData& c, std::span<const double> us, std::size_t from, std::size_t to) {
+  while (from < to && c.allowed.contains(us[from])) ++from;
+  return from;
+}
 
 /// The p+1 rows of `span` as point_at loads them: P_i, or (w_i P_i, w_i).
 inline void load_rows(const CurveData& c, int span, double* rows) {
@@ -237,15 +260,19 @@ void scalar_one(const CurveData& c, int span, double u, double* rows, double* po
   for (int k = 0; k < d; ++k) point[k] = rational ? apex[k] / apex[d] : apex[k];
 }
 
-/// Any degree and dimension, one parameter at a time.
-void scalar_run(const CurveData& c, std::span<const double> us, double* points, double* derivatives) {
+/// Any degree and dimension, one parameter at a time; stops at the first
+/// parameter outside c.allowed and returns its index (us.size() if none).
+std::size_t scalar_run(const CurveData& c, std::span<const double> us, double* points, double* derivatives) {
   const SpanFinder finder(c.knots, c.degree);
   const int width = c.weights ? c.dimension + 1 : c.dimension;
   detail::Workspace<> space;
   double* rows = space.take(static_cast<std::size_t>(c.degree + 1) * static_cast<std::size_t>(width)).data();
   const std::size_t d = static_cast<std::size_t>(c.dimension);
-  for (std::size_t i = 0; i < us.size(); ++i)
+  for (std::size_t i = 0; i < us.size(); ++i) {
+    if (!c.allowed.contains(us[i])) return i;
     scalar_one(c, finder.find(us[i]), us[i], rows, points + i * d, derivatives ? derivatives + i * d : nullptr);
+  }
+  return us.size();
 }
 
 // --- fixed degree and dimension ---------------------------------------------------
@@ -259,9 +286,13 @@ class Kernel {
 
   Kernel(const CurveData& curve) : c_(curve), finder_(curve.knots, P) {}
 
-  /// Every parameter of us; points (and derivatives) get us.size() * D doubles.
-  void run(std::span<const double> us, double* points, double* derivatives) {
+  /// Every parameter of us; points (and derivatives) get us.size() * D
+  /// doubles. Each block's parameters are first checked against c.allowed
+  /// (two compares on the pack it loads anyway): at the first block with one
+  /// outside, it stops and returns that parameter's index (us.size() if none).
+  std::size_t run(std::span<const double> us, double* points, double* derivatives) {
     const std::size_t count = us.size();
+    const double lower = c_.allowed.lower, upper = c_.allowed.upper;
     std::size_t k = 0;
     const std::size_t bytes = count * D * sizeof(double);
     if (kCanStream && bytes >= kStreamingBytes) {
@@ -271,13 +302,23 @@ class Kernel {
       std::size_t head = 0;
       while (head < kLanes && !aligned(points + head * D)) ++head;
       if (head < kLanes && (!Derivative || aligned(derivatives + head * D))) {
+        if (const std::size_t bad = first_outside(c_, us, 0, head); bad < head) return bad;
         partial(us.data(), head, points, derivatives);
-        for (k = head; k + kLanes <= count; k += kLanes) block<true>(us.data() + k, points + k * D, at(derivatives, k));
+        for (k = head; k + kLanes <= count; k += kLanes) {
+          if (!all_inside(load(us.data() + k), lower, upper)) break;
+          block<true>(us.data() + k, points + k * D, at(derivatives, k));
+        }
         end_streaming();
+        if (k + kLanes <= count) return first_outside(c_, us, k, k + kLanes);
       }
     }
-    for (; k + kLanes <= count; k += kLanes) block<false>(us.data() + k, points + k * D, at(derivatives, k));
+    for (; k + kLanes <= count; k += kLanes) {
+      if (!all_inside(load(us.data() + k), lower, upper)) return first_outside(c_, us, k, k + kLanes);
+      block<false>(us.data() + k, points + k * D, at(derivatives, k));
+    }
+    if (const std::size_t bad = first_outside(c_, us, k, count); bad < count) return bad;
     partial(us.data() + k, count - k, points + k * D, at(derivatives, k));
+    return count;
   }
 
  private:
@@ -495,12 +536,12 @@ class Kernel {
 };
 
 template <int P, int D, bool Rational, bool Derivative>
-void run_kernel(const CurveData& c, std::span<const double> us, double* points, double* derivatives) {
+std::size_t run_kernel(const CurveData& c, std::span<const double> us, double* points, double* derivatives) {
   Kernel<P, D, Rational, Derivative> kernel(c);
-  kernel.run(us, points, derivatives);
+  return kernel.run(us, points, derivatives);
 }
 
-using Runner = void (*)(const CurveData&, std::span<const double>, double*, double*);
+using Runner = std::size_t (*)(const CurveData&, std::span<const double>, double*, double*);
 
 template <int D, bool Rational, bool Derivative, int... N>
 constexpr auto runner_table(std::integer_sequence<int, N...>) {
@@ -528,17 +569,17 @@ CurveData data_of(const BSplineCurve& curve) {
   return c;
 }
 
-/// Points (and derivatives, if non-null) of every parameter.
-void evaluate_batch(const BSplineCurve& curve, std::span<const double> us, double* points, double* derivatives) {
-  if (us.empty()) return;
-  const CurveData c = data_of(curve);
+/// Points (and derivatives, if non-null) of every parameter, up to the first
+/// one outside `allowed` (whose index it returns; us.size() if none).
+std::size_t evaluate_batch(const BSplineCurve& curve, std::span<const double> us, double* points, double* derivatives,
+                           Interval allowed = {-std::numeric_limits<double>::infinity(),
+                                               std::numeric_limits<double>::infinity()}) {
+  if (us.empty()) return 0;
+  CurveData c = data_of(curve);
+  c.allowed = allowed;
   const Runner run = derivatives ? fixed_runner<true>(c.degree, c.dimension, curve.is_rational())
                                  : fixed_runner<false>(c.degree, c.dimension, curve.is_rational());
-  if (run) {
-    run(c, us, points, derivatives);
-  } else {
-    scalar_run(c, us, points, derivatives);
-  }
+  return run ? run(c, us, points, derivatives) : scalar_run(c, us, points, derivatives);
 }
 
 }  // namespace
@@ -546,6 +587,12 @@ void evaluate_batch(const BSplineCurve& curve, std::span<const double> us, doubl
 void points_at(const BSplineCurve& curve, std::span<const double> us, std::span<double> out) {
   assert(out.size() == us.size() * static_cast<std::size_t>(curve.dimension()));
   evaluate_batch(curve, us, out.data(), nullptr);
+}
+
+std::size_t points_at_within(const BSplineCurve& curve, std::span<const double> us, Interval allowed,
+                             std::span<double> out) {
+  assert(out.size() == us.size() * static_cast<std::size_t>(curve.dimension()));
+  return evaluate_batch(curve, us, out.data(), nullptr, allowed);
 }
 
 void points_and_derivatives_at(const BSplineCurve& curve, std::span<const double> us, std::span<double> points,

@@ -23,6 +23,7 @@
 
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/bspline/knot_vector.hpp"
 #include "../core/number_text.hpp"
 #include "fit_banded.hpp"
 #include "input_checks.hpp"
@@ -120,6 +121,37 @@ bool schoenberg_whitney(std::span<const double> knots, int degree, std::span<con
   return true;
 }
 
+/// The first free basis function that the Schoenberg–Whitney condition
+/// leaves without a point, for any valid knots (clamped or not): greedily,
+/// each free column j in turn takes the first remaining row of positive
+/// weight where N_j is non-zero (basis_function: the end of the domain closed
+/// as the evaluation does). The supports move right with j, so the greedy
+/// choice finds increasing rows whenever they exist. Nothing when every
+/// column gets a row. O(m p²).
+std::optional<std::size_t> uncovered_column(std::span<const double> knots, int degree,
+                                            std::span<const double> parameters, std::span<const double> weights,
+                                            FitEnds ends) {
+  const std::size_t n = knots.size() - static_cast<std::size_t>(degree) - 2;
+  const bool clamp = ends == FitEnds::interpolated;
+  if (clamp && n < 2) return std::nullopt;
+  const std::size_t first = clamp ? 1 : 0, last = clamp ? n - 1 : n;
+  std::size_t row = clamp ? 1 : 0;
+  const std::size_t end_row = clamp ? parameters.size() - 1 : parameters.size();
+  for (std::size_t j = first; j <= last; ++j) {
+    const double support_end = knots[j + static_cast<std::size_t>(degree) + 1];
+    for (;; ++row) {
+      if (row >= end_row) return j;
+      const bool weighted = weights.empty() || weights[row] > 0.0;
+      if (weighted && basis_function(knots, degree, static_cast<int>(j), parameters[row]) != 0.0) break;
+      // Past the support (N_j vanishes from here on): no later row helps.
+      if (parameters[row] >= support_end && basis_function(knots, degree, static_cast<int>(j), parameters[row]) == 0.0)
+        return j;
+    }
+    ++row;
+  }
+  return std::nullopt;
+}
+
 // --- Gauss–Legendre ------------------------------------------------------------------
 
 /// Nodes and weights of the q-point Gauss–Legendre rule on [-1, 1] (exact for
@@ -196,9 +228,11 @@ struct Solution {
 /// (The NURBS Book eq. 9.63–9.67); free ends leave every column and row.
 class FitSystem {
  public:
+  /// `weights`: empty (all 1) or one w_k >= 0 per point, multiplying row k's
+  /// squared residual (its contribution to G and Bᵀ P̃).
   FitSystem(const PointArray& points, std::span<const double> parameters, int degree, std::vector<double> knots,
-            FitEnds ends, bool with_penalty)
-      : points_(points), degree_(degree), knots_(std::move(knots)),
+            FitEnds ends, bool with_penalty, std::span<const double> weights = {})
+      : points_(points), weights_(weights.begin(), weights.end()), degree_(degree), knots_(std::move(knots)),
         count_(knots_.size() - static_cast<std::size_t>(degree) - 1), clamp_(ends == FitEnds::interpolated),
         first_row_(clamp_ ? 1 : 0), end_row_(clamp_ ? points.size() - 1 : points.size()),
         first_column_(clamp_ ? 1 : 0), free_count_(clamp_ ? count_ - 2 : count_),
@@ -307,20 +341,26 @@ class FitSystem {
     const double* values = basis_.data() + row * (p + 1);
     const double* target = targets_.data() + row * d;
     const std::size_t column0 = spans_[row] - p;
+    const double weight = weight_of(row);
+    if (weight == 0.0) return;
     for (std::size_t r = 0; r <= p; ++r) {
       const std::size_t a = column0 + r;
       if (a < first_column_ || a >= first_column_ + free_count_) continue;
       const std::size_t i = a - first_column_;
-      for (std::size_t c = 0; c < d; ++c) right_side_[i * d + c] += values[r] * target[c];
+      const double weighted = weight * values[r];
+      for (std::size_t c = 0; c < d; ++c) right_side_[i * d + c] += weighted * target[c];
       for (std::size_t s = 0; s <= r; ++s) {
         const std::size_t b = column0 + s;
         if (b < first_column_) continue;
-        gram_.at(i, b - first_column_) += values[r] * values[s];
+        gram_.at(i, b - first_column_) += weighted * values[s];
       }
     }
   }
 
-  /// Σ_k ‖P̃_k − Σ_free N_j(t_k) Q_j‖² (rows 0 and m of interpolated ends are exact).
+  /// The weight of design row `row` (1 without weights).
+  double weight_of(std::size_t row) const noexcept { return weights_.empty() ? 1.0 : weights_[row + first_row_]; }
+
+  /// Σ_k w_k ‖P̃_k − Σ_free N_j(t_k) Q_j‖² (rows 0 and m of interpolated ends are exact).
   double residual_sum(const PointArray& control_points) const {
     const auto p = static_cast<std::size_t>(degree_);
     const auto d = static_cast<std::size_t>(points_.dimension());
@@ -337,13 +377,14 @@ class FitSystem {
       }
       for (std::size_t c = 0; c < d; ++c) {
         const double r = targets_[row * d + c] - fitted[c];
-        sum += r * r;
+        sum += weight_of(row) * r * r;
       }
     }
     return sum;
   }
 
   const PointArray& points_;
+  std::vector<double> weights_;  // empty: all 1
   int degree_;
   std::vector<double> knots_;
   std::size_t count_;         // n+1 control points
@@ -489,6 +530,59 @@ Expected<BSplineFit> fit_least_squares(const PointArray& points, std::span<const
                          ends, false);
   auto solution = system.solve(0.0, false);
   if (!solution) return singular_error(control_point_count, 0.0);
+  return make_result(system, std::move(*solution), points, parameters, degree, 0.0);
+}
+
+Expected<BSplineFit> fit_least_squares_on_knots(const PointArray& points, std::span<const double> parameters,
+                                                int degree, std::vector<double> knots, std::span<const double> weights,
+                                                FitEnds ends) {
+  if (auto valid = check_fit_input(points, parameters, degree); !valid) return valid.error();
+  const std::size_t width = static_cast<std::size_t>(degree) + 1;
+  if (knots.size() < 2 * width) {
+    return Error{std::to_string(knots.size()) + " knots given, a B-spline of degree " + std::to_string(degree) +
+                 " needs at least " + std::to_string(2 * width) + " (degree + 1 control points)"};
+  }
+  const std::size_t count = knots.size() - width;  // n + 1
+  if (auto valid = validate_knots(knots, degree, count); !valid) return valid.error();
+  if (!weights.empty()) {
+    if (weights.size() != points.size()) {
+      return Error{std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
+                   " points, a weighted fit needs one weight per point"};
+    }
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+      if (auto finite = check_finite(weights[i], "weight " + std::to_string(i)); !finite) return finite.error();
+      if (weights[i] < 0.0) {
+        return Error{"weight " + std::to_string(i) + " is " + number_text(weights[i]) + ", weights must be >= 0"};
+      }
+    }
+  }
+  const double lower = knots[width - 1], upper = knots[count];
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    if (parameters[i] < lower || parameters[i] > upper) {
+      return Error{"parameter " + std::to_string(i) + " (" + number_text(parameters[i]) +
+                   ") is outside the knots' domain [" + number_text(lower) + ", " + number_text(upper) + "]"};
+    }
+  }
+  if (ends == FitEnds::interpolated) {
+    // Q_0 = P_0 and Q_n = P_m put the curve through the end points only on
+    // knots clamped there.
+    const bool clamped_start = knots.front() == parameters.front() && knots[width - 1] == parameters.front();
+    const bool clamped_end = knots.back() == parameters.back() && knots[count] == parameters.back();
+    if (!clamped_start || !clamped_end) {
+      return Error{"a fit with interpolated ends needs knots clamped at the first and last parameters (" +
+                   number_text(parameters.front()) + " and " + number_text(parameters.back()) + ", degree + 1 = " +
+                   std::to_string(width) + " copies each)"};
+    }
+  }
+  if (const auto column = uncovered_column(knots, degree, parameters, weights, ends)) {
+    const std::size_t j = *column;
+    return Error{"no point of positive weight is left for basis function " + std::to_string(j) + " (support [" +
+                 number_text(knots[j]) + ", " + number_text(knots[j + width]) + ")): the knots and parameters " +
+                 "violate the Schoenberg–Whitney condition, the fit's normal equations are singular"};
+  }
+  const FitSystem system(points, parameters, degree, std::move(knots), ends, false, weights);
+  auto solution = system.solve(0.0, false);
+  if (!solution) return singular_error(count, 0.0);
   return make_result(system, std::move(*solution), points, parameters, degree, 0.0);
 }
 

@@ -7,6 +7,9 @@
 #include <cmath>
 #include <string>
 
+#include "../core/number_text.hpp"
+#include "casteljau/bspline/basis.hpp"
+#include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "collocation.hpp"
 #include "cubic_sweep.hpp"
@@ -35,6 +38,31 @@ Status check_vector(std::span<const double> value, int dimension, const std::str
       return Error{"coordinate " + std::to_string(k) + " of " + what + " is " +
                    (std::isnan(value[k]) ? "NaN" : "infinite")};
     }
+  }
+  return {};
+}
+
+/// Checks the end derivatives of interpolate_bspline / interpolate_on_knots:
+/// orders in 1..p, no order twice at one end, values of the points'
+/// dimension and finite. Counts them per end.
+Status check_end_derivatives(std::span<const EndDerivative> derivatives, int p, int dimension, std::size_t& at_start,
+                             std::size_t& at_end) {
+  at_start = at_end = 0;
+  for (std::size_t i = 0; i < derivatives.size(); ++i) {
+    const EndDerivative& e = derivatives[i];
+    const std::string what = "end derivative " + std::to_string(i);
+    if (e.order < 1 || e.order > p) {
+      return Error{what + " has order " + std::to_string(e.order) + ", orders must be in 1.." + std::to_string(p) +
+                   " for degree " + std::to_string(p)};
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (derivatives[j].at_end == e.at_end && derivatives[j].order == e.order) {
+        return Error{what + " repeats the order-" + std::to_string(e.order) + " derivative at the " +
+                     (e.at_end ? "end" : "start") + " (end derivative " + std::to_string(j) + ")"};
+      }
+    }
+    if (auto ok = check_vector(e.value, dimension, what); !ok) return ok.error();
+    ++(e.at_end ? at_end : at_start);
   }
   return {};
 }
@@ -193,28 +221,16 @@ Expected<BSplineCurve> interpolate_bspline(const PointArray& points, std::span<c
   // Each end takes at most p - 1 derivatives: p of them would make the first
   // averaged interior knot equal t_0 (multiplicity p + 2).
   std::size_t at_start = 0, at_end = 0;
-  for (std::size_t i = 0; i < derivatives.size(); ++i) {
-    const EndDerivative& e = derivatives[i];
-    const std::string what = "end derivative " + std::to_string(i);
-    if (e.order < 1 || e.order > p) {
-      return Error{what + " has order " + std::to_string(e.order) + ", orders must be in 1.." + std::to_string(p) +
-                   " for degree " + std::to_string(p)};
-    }
-    for (std::size_t j = 0; j < i; ++j) {
-      if (derivatives[j].at_end == e.at_end && derivatives[j].order == e.order) {
-        return Error{what + " repeats the order-" + std::to_string(e.order) + " derivative at the " +
-                     (e.at_end ? "end" : "start") + " (end derivative " + std::to_string(j) + ")"};
-      }
-    }
-    if (auto ok = check_vector(e.value, points.dimension(), what); !ok) return ok.error();
-    ++(e.at_end ? at_end : at_start);
-  }
+  if (auto ok = check_end_derivatives(derivatives, p, points.dimension(), at_start, at_end); !ok) return ok.error();
   if (std::max(at_start, at_end) > static_cast<std::size_t>(p - 1)) {
     return Error{std::to_string(std::max(at_start, at_end)) + " derivatives at the " +
                  (at_end > at_start ? "end" : "start") + ", degree " + std::to_string(p) + " takes at most " +
                  std::to_string(p - 1) + " at each end"};
   }
-  const std::size_t needed = std::max<std::size_t>(2, static_cast<std::size_t>(p) + 1 - derivatives.size());
+  // Signed: with more derivatives than p + 1 the difference is negative (and
+  // 2 points are then enough), which an unsigned subtraction would wrap.
+  const auto needed = static_cast<std::size_t>(
+      std::max<long long>(2, static_cast<long long>(p) + 1 - static_cast<long long>(derivatives.size())));
   const std::string method = "degree-" + std::to_string(p) + " interpolation with " +
                              std::to_string(derivatives.size()) + " end derivatives";
   if (auto ok = detail::check_interpolation_input(points, parameters, m1, needed, method); !ok) return ok.error();
@@ -238,6 +254,73 @@ Expected<BSplineCurve> interpolate_bspline(const PointArray& points, std::span<c
   }
   auto knots = clamped_knots(p, parameters.front(), interior, parameters.back());
   std::vector<detail::EndConstraint> constraints;
+  for (const EndDerivative& e : derivatives) constraints.push_back({e.at_end, e.order, e.value});
+  auto control = detail::solve_collocation(p, knots, parameters, points, constraints);
+  if (!control) return control.error();
+  return BSplineCurve::from_trusted(p, std::move(knots), std::move(*control));
+}
+
+Expected<BSplineCurve> interpolate_on_knots(const PointArray& points, std::span<const double> parameters, int degree,
+                                            std::vector<double> knots, std::span<const EndDerivative> derivatives) {
+  using detail::number_text;
+  const int p = degree;
+  if (p < 1 || p > tolerances::kMaxBSplineDegree) {
+    return Error{"degree " + std::to_string(p) + " is outside 1.." + std::to_string(tolerances::kMaxBSplineDegree) +
+                 " for B-spline interpolation"};
+  }
+  const std::size_t m1 = points.size();
+  std::size_t at_start = 0, at_end = 0;
+  if (auto ok = check_end_derivatives(derivatives, p, points.dimension(), at_start, at_end); !ok) return ok.error();
+  const std::string method = "degree-" + std::to_string(p) + " interpolation on given knots";
+  if (auto ok = detail::check_interpolation_input(points, parameters, m1, 2, method); !ok) return ok.error();
+
+  // One control point per condition: n + 1 = (m + 1) + derivatives.
+  const std::size_t unknowns = m1 + derivatives.size();
+  const std::size_t width = static_cast<std::size_t>(p) + 1;
+  const std::string conditions = std::to_string(m1) + " points and " + std::to_string(derivatives.size()) +
+                                 " end derivatives";
+  if (unknowns < width) {
+    return Error{conditions + " determine " + std::to_string(unknowns) + " control points, degree " +
+                 std::to_string(p) + " needs at least " + std::to_string(width)};
+  }
+  if (knots.size() != unknowns + width) {
+    return Error{std::to_string(knots.size()) + " knots given, " + conditions + " determine " +
+                 std::to_string(unknowns) + " control points of degree " + std::to_string(p) + ", which need " +
+                 std::to_string(unknowns + width) + " knots (control points + degree + 1)"};
+  }
+  if (auto ok = validate_knots(knots, p, unknowns); !ok) return ok.error();
+  const std::size_t first = static_cast<std::size_t>(p), last = unknowns;  // the domain [knots[p], knots[n+1]]
+  if (parameters.front() != knots[first] || parameters.back() != knots[last]) {
+    const bool at_first = parameters.front() != knots[first];
+    const std::size_t i = at_first ? 0 : m1 - 1;
+    const std::size_t k = at_first ? first : last;
+    return Error{"parameter " + std::to_string(i) + " (" + number_text(parameters[i]) + ") is not knot " +
+                 std::to_string(k) + " (" + number_text(knots[k]) + "), the " + (at_first ? "start" : "end") +
+                 " of the knots' domain: the parameters must run from knot " + std::to_string(first) +
+                 " to knot " + std::to_string(last)};
+  }
+
+  // Schoenberg–Whitney (de Boor ch. XIII): row j of the system, in the
+  // solver's order, must not vanish on basis function j. Point rows: N_j at
+  // the parameter, the end of the domain closed as the evaluation closes it.
+  // Derivative rows need t_0 (t_m) in the closed support of N_j, which holds
+  // for every j they take (j <= p at the start, so knots[j] <= knots[p] = t_0
+  // <= knots[j+p+1]; alike at the end): only point rows can fail.
+  for (std::size_t j = 0; j < unknowns; ++j) {
+    const bool derivative_row = (j >= 1 && j <= at_start) || (j + 1 < unknowns && j + 1 + at_end >= unknowns);
+    if (derivative_row) continue;
+    const std::size_t i = j == 0 ? 0 : (j + 1 == unknowns ? m1 - 1 : j - at_start);
+    if (basis_function(knots, p, static_cast<int>(j), parameters[i]) == 0.0) {
+      return Error{"parameter " + std::to_string(i) + " (" + number_text(parameters[i]) +
+                   ") is not inside the support [" + number_text(knots[j]) + ", " + number_text(knots[j + width]) +
+                   ") of basis function " + std::to_string(j) +
+                   ": the knots and parameters violate the Schoenberg–Whitney condition, no spline on these knots "
+                   "interpolates them"};
+    }
+  }
+
+  std::vector<detail::EndConstraint> constraints;
+  constraints.reserve(derivatives.size());
   for (const EndDerivative& e : derivatives) constraints.push_back({e.at_end, e.order, e.value});
   auto control = detail::solve_collocation(p, knots, parameters, points, constraints);
   if (!control) return control.error();

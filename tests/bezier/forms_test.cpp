@@ -104,5 +104,18 @@ TEST(PiecewiseBezier, PiecesCoverUnitIntervals) {
   EXPECT_FALSE(PiecewiseBezierCurve::make({}).has_value());
 }
 
+// Extrapolation accepts any finite u: far beyond int's range the end pieces
+// are still chosen (the piece index is clamped before the conversion to int,
+// which would be undefined behaviour, caught by UBSan in the ASan build).
+TEST(PiecewiseBezier, LocateFarOutsideTheDomainPicksTheEndPieces) {
+  const auto a = BezierCurve::make(PointArray::make({{0, 0}, {1, 1}}).value()).value();
+  const auto b = BezierCurve::make(PointArray::make({{1, 1}, {2, 1}, {3, 0}}).value()).value();
+  const auto curve = PiecewiseBezierCurve::make({a, b}).value();
+  EXPECT_EQ(locate(curve, 1e300), (std::pair<int, double>{1, 1e300 - 1.0}));
+  EXPECT_EQ(locate(curve, -1e300), (std::pair<int, double>{0, -1e300}));
+  EXPECT_EQ(locate(curve, 3e9).first, 1);
+  EXPECT_EQ(locate(curve, -3e9).first, 0);
+}
+
 }  // namespace
 }  // namespace casteljau

@@ -17,6 +17,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include "casteljau/bspline/basis.hpp"
@@ -319,6 +321,43 @@ TEST(BSplinePointsAt, ScalarArithmeticAgreesWithTheBasisFunctionSums) {
           }
         }
       }
+    }
+  }
+}
+
+// points_at_within: the whole batch when every parameter is inside (the same
+// bits as points_at), else the index of the first one outside, NaN or
+// infinite, wherever it falls: the head before aligned streaming blocks, a
+// streaming block, a plain block, the tail, and the scalar path (degree 8,
+// dimension 4).
+TEST(BSplinePointsAtWithin, StopsAtTheFirstParameterOutside) {
+  Random random{2026u};
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (const auto& [p, d] : {std::pair{3, 3}, std::pair{2, 1}, std::pair{8, 4}}) {
+    const BSplineCurve curve = random_curve(random, p, d, p == 2, true);
+    const Interval domain = curve.domain();
+    for (const std::size_t count : {std::size_t{5}, std::size_t{37}, std::size_t{200'003}}) {
+      std::vector<double> us(count);
+      for (std::size_t i = 0; i < count; ++i) us[i] = domain.lerp(static_cast<double>(i) / static_cast<double>(count));
+      std::vector<double> out(count * static_cast<std::size_t>(d) + 1), reference(count * static_cast<std::size_t>(d));
+      const std::span<double> shifted(out.data() + 1, count * static_cast<std::size_t>(d));  // not pack-aligned
+      ASSERT_EQ(points_at_within(curve, us, domain, shifted), count);
+      points_at(curve, us, reference);
+      EXPECT_TRUE(std::equal(reference.begin(), reference.end(), shifted.begin(), same_bits)) << p << " " << count;
+      for (const std::size_t at : {std::size_t{0}, std::size_t{3}, count / 2, count - 1}) {
+        for (const double bad : {nan, inf, -inf, domain.upper + 1e-9 * domain.length(), domain.lower - 1.0}) {
+          const double kept = us[at];
+          us[at] = bad;
+          EXPECT_EQ(points_at_within(curve, us, domain, shifted), at) << p << " " << count << " " << bad;
+          us[at] = kept;
+        }
+      }
+      // The finite check alone: outside the domain is allowed, NaN is not.
+      const Interval finite{-std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+      us[count - 1] = domain.upper + 1.0;
+      EXPECT_EQ(points_at_within(curve, us, finite, shifted), count);
+      us[count - 1] = nan;
+      EXPECT_EQ(points_at_within(curve, us, finite, shifted), count - 1);
     }
   }
 }

@@ -48,6 +48,9 @@ lines=$("$casteljau" eval "$work/spline.json" --samples 40 | wc -l)
 # --- bad input ------------------------------------------------------------------
 expect_error "a single number for a surface" "--at: '0.5' is not a parameter pair u,v (a surface takes u,v)" \
   eval "$work/patch.json" --at 0.5
+expect_error "a derivative order too high for a surface" \
+  "--derivative 60,41: ku + kv = 101 is more than the limit of 100 for a surface" \
+  eval "$work/patch.json" --at 0.5,0.5 --derivative 60,41
 expect_error "three numbers" "--at: '0,1,2' is not a parameter pair u,v" eval "$work/patch.json" --at 0,1,2
 expect_error "not a number" "--at: 'x' is not a number (a surface takes u,v)" eval "$work/patch.json" --at 0,x
 expect_error "u outside" "--at 1.5,0 is outside the domain [0, 1] x [0, 1] of the bezier_surface model in '$work/patch.json'" \

@@ -407,6 +407,29 @@ TEST(InterpolateBSpline, KnotsAverageTheParameters) {
   expect_control_points_near(*with_ends, exact_clamped(k2, 3, kT, kPoints, ends), 1e-14);
 }
 
+// More end derivatives than p + 1 in all: two points are enough (the
+// point count needed was once computed unsigned and wrapped around). Degree 5
+// with 4 derivatives at each end through 2 points: 10 conditions, 10 control
+// points on the averaged knots 0.2, 0.4, 0.6, 0.8; checked against the data.
+TEST(InterpolateBSpline, ManyEndDerivativesNeedOnlyTwoPoints) {
+  const auto points = PointArray::make({{0.0, 0.0}, {3.0, 1.0}}).value();
+  const std::vector<double> parameters{0.0, 1.0};
+  std::vector<EndDerivative> ends;
+  for (int k = 1; k <= 4; ++k) {
+    ends.push_back({false, k, {static_cast<double>(k), 0.0}});
+    ends.push_back({true, k, {0.0, -static_cast<double>(k)}});
+  }
+  const auto curve = interpolate_bspline(points, parameters, 5, ends);
+  ASSERT_TRUE(curve.has_value()) << curve.error().message;
+  EXPECT_EQ(curve->control_points().size(), 10u);
+  EXPECT_LE(distance(point_at(*curve, 0.0), points[0]), 1e-14);
+  EXPECT_LE(distance(point_at(*curve, 1.0), points[1]), 1e-14);
+  for (const EndDerivative& e : ends) {
+    EXPECT_LE(distance(derivative_at(*curve, e.at_end ? 1.0 : 0.0, e.order), e.value), 1e-9 * (1 << (3 * e.order)))
+        << e.order << (e.at_end ? " at the end" : " at the start");
+  }
+}
+
 RC_GTEST_PROP(InterpolateBSpline, MeetsTheDataAndTheDerivatives, ()) {
   const int p = *rc::gen::inRange(1, 7);
   std::vector<EndDerivative> derivatives;

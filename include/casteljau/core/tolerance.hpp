@@ -189,6 +189,13 @@ inline constexpr int kMaxLagrangeBezierDegree = 40;
 /// request cheap.
 inline constexpr int kMaxDerivativeOrder = 1000;
 
+/// Highest total order k + l of a surface partial derivative d^(k+l)S/du^k dv^l
+/// the front ends accept. A NURBS surface's derivative needs every lower pair
+/// (NURBS Book A4.4): O(k^2 l^2) point operations, 50^4 ≈ 6e6 at k = l = 50,
+/// while k = l = 300 already took 28 s. Polynomial derivatives above the
+/// degree vanish, so the limit costs nothing real.
+inline constexpr int kMaxSurfaceDerivativeOrder = 100;
+
 /// Highest order q accepted by interpolate_natural (degree 2q - 1). The
 /// natural end conditions are derivatives of orders q..2q-2 at the ends,
 /// whose basis values grow like (2q-1)!/(q-1)! / h^j; past q = 8 (degree 15,

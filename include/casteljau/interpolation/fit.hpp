@@ -71,6 +71,27 @@ std::vector<double> approximation_knots(std::span<const double> parameters, int 
 Expected<BSplineFit> fit_least_squares(const PointArray& points, std::span<const double> parameters, int degree,
                                        std::size_t control_point_count, FitEnds ends = FitEnds::interpolated);
 
+/// The weighted least-squares B-spline of degree p on the given knots
+/// (The NURBS Book §9.4.1 with the weights of §9.4.4; de Boor, A Practical
+/// Guide to Splines, ch. XIV): minimizes Σ w_i ‖C(t_i) − P_i‖² over all n+1 =
+/// knots.size() − p − 1 control points (FitEnds::free: scipy's
+/// make_lsq_spline(t, P, knots, k=p, w=√w), whose weights multiply the
+/// residual before squaring), or over Q_1..Q_{n−1} with Q_0 = P_0 and
+/// Q_n = P_m (FitEnds::interpolated, which needs knots clamped at t_0 and
+/// t_m). `weights` empty means all 1; otherwise one finite w_i >= 0 per point
+/// (a zero weight leaves the point out). The knots pass validate_knots and
+/// every parameter lies in the domain [knots[p], knots[n+1]] (the knots need
+/// not be clamped). The Schoenberg–Whitney condition (an increasing choice
+/// of points of positive weight, one inside the support of each free basis
+/// function) is checked, and its error names the first basis function left
+/// without a point and its support. Other errors: those of
+/// fit_least_squares (degree, counts, non-finite or non-increasing input).
+/// The result's errors are unweighted distances. O(m p² + m p d) time,
+/// O(m p) memory.
+Expected<BSplineFit> fit_least_squares_on_knots(const PointArray& points, std::span<const double> parameters,
+                                                int degree, std::vector<double> knots,
+                                                std::span<const double> weights = {}, FitEnds ends = FitEnds::free);
+
 /// What a smoothing fit is asked for.
 struct SmoothingOptions {
   int degree = 3;  ///< p >= 2 (∫ ‖C''‖² needs C'' to be a function)

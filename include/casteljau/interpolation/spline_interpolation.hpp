@@ -79,4 +79,27 @@ struct EndDerivative {
 Expected<BSplineCurve> interpolate_bspline(const PointArray& points, std::span<const double> parameters,
                                            int degree, std::span<const EndDerivative> derivatives = {});
 
+/// The B-spline of degree p on the given knots through the points, by
+/// collocation (The NURBS Book §9.2.1 eq. 9.10 and §9.2.2; de Boor, A
+/// Practical Guide to Splines, ch. XIII): C(t_i) = P_i and the prescribed end
+/// derivatives at t_0 and t_m, n + 1 = m + 1 + (number of derivatives)
+/// control points, so knots.size() must be n + p + 2. This is scipy's
+/// make_interp_spline(t, P, k=p, t=knots, bc_type=...) (same coefficients up
+/// to rounding). The knots pass validate_knots, and the parameters must span
+/// the domain exactly: t_0 = knots[p], t_m = knots[n+1] (the knots need not
+/// be clamped). The Schoenberg–Whitney condition is checked row by row in
+/// the solver's row order (C(t_0), start derivatives, C(t_1)..C(t_{m-1}),
+/// end derivatives, C(t_m)): the row of parameter i must not vanish on basis
+/// function j, its column ("parameter 3 (0.5) is not inside the support
+/// [0.6, 0.9) of basis function 3"; derivative rows always meet it, t_0 and
+/// t_m being the domain's ends). Errors also: degree outside
+/// 1..tolerances::kMaxBSplineDegree, fewer than 2 points, a knot count that
+/// does not match, parameters not finite or not strictly increasing,
+/// derivatives as for interpolate_bspline (an order outside 1..p, or one
+/// order twice at one end; up to p derivatives at each end are allowed), a
+/// system that is singular anyway. O(m p² d).
+Expected<BSplineCurve> interpolate_on_knots(const PointArray& points, std::span<const double> parameters,
+                                            int degree, std::vector<double> knots,
+                                            std::span<const EndDerivative> derivatives = {});
+
 }  // namespace casteljau
