@@ -23,7 +23,7 @@ ifeq ($(CI),true)
   CMAKE_FLAGS += -DCASTELJAU_WERROR=ON
 endif
 
-.PHONY: all deps bench-deps build asan wasm test demo bench clean
+.PHONY: all deps bench-deps build python asan wasm test demo bench clean
 
 all: build
 
@@ -51,6 +51,14 @@ build: deps
 	cmake --preset default $(CMAKE_FLAGS) >/dev/null
 	cmake --build --preset default -j $(JOBS)
 
+# The Python module (pybind11, /usr/bin/python3) in build/python/casteljau:
+# PYTHONPATH=build/python /usr/bin/python3 -c "import casteljau". Install it
+# with cmake --install build --component python --prefix PREFIX.
+python: deps
+	cmake --preset default $(CMAKE_FLAGS) >/dev/null
+	cmake --build --preset default -j $(JOBS) --target casteljau_python
+	@echo "make python: import it with PYTHONPATH=$(CURDIR)/build/python $(PYTHON)"
+
 asan: deps
 	cmake --preset asan $(CMAKE_FLAGS) >/dev/null
 	cmake --build --preset asan -j $(JOBS)
@@ -63,8 +71,9 @@ wasm: deps
 test: build asan wasm
 	@echo "== C++ tests (build/) =="
 	cd build && ctest --output-on-failure -j $(JOBS) -LE python
-	@echo "== Python tests (pytest with $(PYTHON): cross-checks against scipy through build/casteljau) =="
-	CASTELJAU_CLI=$(CURDIR)/build/casteljau $(PYTHON) -m pytest -q -p no:cacheprovider tests/python
+	@echo "== Python tests (pytest with $(PYTHON): the module in build/python, the CLI build/casteljau, against scipy) =="
+	CASTELJAU_CLI=$(CURDIR)/build/casteljau CASTELJAU_PYTHONPATH=$(CURDIR)/build/python \
+	  $(PYTHON) -m pytest -q -p no:cacheprovider tests/python
 	@echo "== C++ tests under AddressSanitizer + UBSan (build-asan/) =="
 	cd build-asan && ctest --output-on-failure -j $(JOBS) -LE python
 	@echo "== core library built with em++, run under node (build-wasm/) =="

@@ -9,3 +9,4 @@ imported on demand). docs/python.md describes the conventions.
 
 from ._casteljau import *  # noqa: F401,F403  (the C++ API, names as in C++)
 from ._casteljau import __version__, tolerances  # noqa: F401
+from .scipy_like import BSpline, CubicSpline, make_interp_spline, make_lsq_spline, make_smoothing_spline  # noqa: F401

@@ -7,18 +7,30 @@
 
 namespace casteljau::python {
 
-namespace {
-
 std::string shape_text(const py::array& array) {
   std::string text = "(";
   for (py::ssize_t i = 0; i < array.ndim(); ++i) {
+    if (i > 0) text += ", ";
     text += std::to_string(array.shape(i));
-    if (array.ndim() == 1 || i + 1 < array.ndim()) text += array.ndim() == 1 ? "," : ", ";
   }
-  return text + ")";
+  return text + (array.ndim() == 1 ? ",)" : ")");
 }
 
-}  // namespace
+void check_parameter(double value, Interval domain, bool extrapolate, const std::string& what) {
+  if (std::isnan(value)) throw py::value_error(what + " is NaN");
+  if (std::isinf(value)) throw py::value_error(what + " is infinite");
+  if (!extrapolate && !domain.contains(value)) {
+    throw py::value_error(fmt::format("{} = {} is outside the domain [{}, {}] (pass extrapolate=True to evaluate "
+                                      "the end pieces continued)",
+                                      what, value, domain.lower, domain.upper));
+  }
+}
+
+void check_derivative_order(int order, int lowest, const std::string& what) {
+  if (order < lowest || order > tolerances::kMaxDerivativeOrder) {
+    throw py::value_error(fmt::format("{} {} is outside {}..{}", what, order, lowest, tolerances::kMaxDerivativeOrder));
+  }
+}
 
 void unwrap(const Status& status) {
   if (!status) throw py::value_error(status.error().message);
@@ -26,9 +38,20 @@ void unwrap(const Status& status) {
 
 DoubleArray as_double_array(const py::handle& object, const std::string& what) {
   if (object.is_none()) throw py::type_error(what + " is None, expected an array of numbers");
-  // np.asarray: no copy for arrays; lists and scalars become arrays.
-  const py::array array = py::array::ensure(object);
-  if (!array) throw py::type_error(what + " is not convertible to an array of numbers");
+  // np.asarray: no copy for arrays; lists and scalars become arrays. numpy's
+  // own ValueError (a ragged nested list) keeps its type, with `what` named.
+  py::array array;
+  if (py::isinstance<py::array>(object)) {
+    array = py::reinterpret_borrow<py::array>(object);
+  } else {
+    try {
+      array = py::module_::import("numpy").attr("asarray")(object);
+    } catch (py::error_already_set& error) {
+      const std::string message = fmt::format("{} is not an array of numbers: {}", what, error.what());
+      if (error.matches(PyExc_ValueError)) throw py::value_error(message);
+      throw py::type_error(message);
+    }
+  }
   const char kind = array.dtype().kind();
   if (kind != 'f' && kind != 'i' && kind != 'u') {
     const std::string dtype = py::str(array.dtype());

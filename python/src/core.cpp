@@ -26,6 +26,7 @@ void bind_core(py::module_& module) {
   limits.attr("MAX_BSPLINE_DEGREE") = tolerances::kMaxBSplineDegree;
   limits.attr("MAX_CONTROL_POINTS") = tolerances::kMaxControlPoints;
   limits.attr("MAX_DERIVATIVE_ORDER") = tolerances::kMaxDerivativeOrder;
+  limits.attr("MAX_SURFACE_DERIVATIVE_ORDER") = tolerances::kMaxSurfaceDerivativeOrder;
   limits.attr("MAX_STACK_DEGREE") = tolerances::kMaxStackDegree;
   limits.attr("MAX_MESH_TRIANGLES") = tolerances::kMaxMeshTriangles;
   limits.attr("MAX_FLATTEN_SEGMENTS") = tolerances::kMaxFlattenSegments;

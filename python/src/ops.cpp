@@ -1,5 +1,299 @@
+// The ops layer in Python: curve flattening within a tolerance
+// (ops/flatten.hpp), triangle meshes (TriangleMesh, mesh_topology) and the
+// tessellation of surfaces of any kind into one mesh (ops/tessellate.hpp).
+// Tolerances are floats checked by tolerance_from; the long computations
+// run without the GIL.
+
+#include <pybind11/stl.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "arrays.hpp"
 #include "bindings.hpp"
+#include "casteljau/bezier/bezier_curve.hpp"
+#include "casteljau/core/tolerance.hpp"
+#include "casteljau/ops/flatten.hpp"
+#include "casteljau/ops/mesh.hpp"
+#include "casteljau/ops/tessellate.hpp"
+#include "casteljau/surfaces/surface_view.hpp"
 
 namespace casteljau::python {
-void bind_ops(pybind11::module_&) {}
+
+namespace {
+
+/// An (n, 3) array of finite coordinates (n >= 0) as a PointArray of dimension 3.
+PointArray points3_from(const py::handle& object, const std::string& what) {
+  const DoubleArray array = as_double_array(object, what);
+  if (array.ndim() != 2 || array.shape(1) != 3) {
+    throw py::value_error(fmt::format("{} must be an (n, 3) array, got shape {}", what, shape_text(array)));
+  }
+  const double* data = array.data();
+  const std::size_t size = static_cast<std::size_t>(array.size());
+  for (std::size_t k = 0; k < size; ++k) {
+    if (!std::isfinite(data[k])) {
+      throw py::value_error(
+          fmt::format("{}[{}, {}] is {}", what, k / 3, k % 3, std::isnan(data[k]) ? "NaN" : "infinite"));
+    }
+  }
+  if (size == 0) return PointArray::zeros(3, 0);
+  return unwrap(PointArray::make(3, std::vector<double>(data, data + size), what.c_str()));
+}
+
+/// An (m, 3) array of integer vertex indices, each in [0, vertex_count).
+std::vector<std::array<std::uint32_t, 3>> triangles_from(const py::handle& object, std::size_t vertex_count) {
+  const py::array array = py::array::ensure(object);
+  if (!array) throw py::type_error("triangles is not convertible to an array of integers");
+  const char kind = array.dtype().kind();
+  if (kind != 'i' && kind != 'u') {
+    throw py::type_error(fmt::format("triangles has dtype {}, expected integers", std::string(py::str(array.dtype()))));
+  }
+  if (array.ndim() != 2 || array.shape(1) != 3) {
+    throw py::value_error(fmt::format("triangles must be an (m, 3) array of vertex indices, got shape {}",
+                                      shape_text(array)));
+  }
+  if (static_cast<std::size_t>(array.shape(0)) > tolerances::kMaxMeshTriangles) {
+    throw py::value_error(fmt::format("triangles has {} rows, more than the limit {}", array.shape(0),
+                                      tolerances::kMaxMeshTriangles));
+  }
+  // uint64 values above int64's range would wrap: compare before casting.
+  if (kind == 'u' && array.dtype().itemsize() == 8) {
+    const auto wide = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+    for (py::ssize_t k = 0; k < wide.size(); ++k) {
+      if (wide.data()[k] >= vertex_count) {
+        throw py::value_error(fmt::format("triangles[{}, {}] is {}, outside the {} vertices", k / 3, k % 3,
+                                          wide.data()[k], vertex_count));
+      }
+    }
+  }
+  const auto indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
+  std::vector<std::array<std::uint32_t, 3>> triangles(static_cast<std::size_t>(indices.shape(0)));
+  const std::int64_t* data = indices.data();
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::int64_t index = data[3 * t + c];
+      if (index < 0 || static_cast<std::uint64_t>(index) >= vertex_count) {
+        throw py::value_error(
+            fmt::format("triangles[{}, {}] is {}, outside the {} vertices (indices start at 0)", t, c, index, vertex_count));
+      }
+      triangles[t][c] = static_cast<std::uint32_t>(index);
+    }
+  }
+  return triangles;
+}
+
+TriangleMesh make_mesh(const py::object& vertices, const py::object& normals, const py::object& triangles) {
+  TriangleMesh mesh;
+  mesh.vertices = points3_from(vertices, "vertices");
+  mesh.normals = points3_from(normals, "normals");
+  if (mesh.normals.size() != mesh.vertices.size()) {
+    throw py::value_error(fmt::format("normals has {} rows, vertices has {}: one normal per vertex",
+                                      mesh.normals.size(), mesh.vertices.size()));
+  }
+  if (mesh.vertices.size() > std::numeric_limits<std::uint32_t>::max()) {
+    throw py::value_error("vertices has more than 2^32 - 1 rows, beyond 32-bit indices");
+  }
+  mesh.triangles = triangles_from(triangles, mesh.vertices.size());
+  return mesh;
+}
+
+DoubleArray points3_to_numpy(const PointArray& points) {
+  DoubleArray array({static_cast<py::ssize_t>(points.size()), static_cast<py::ssize_t>(3)});
+  const std::span<const double> source = points.coordinates();
+  if (!source.empty()) std::memcpy(array.mutable_data(), source.data(), source.size() * sizeof(double));
+  return array;
+}
+
+py::array_t<std::int64_t> triangles_to_numpy(const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  py::array_t<std::int64_t> array({static_cast<py::ssize_t>(triangles.size()), static_cast<py::ssize_t>(3)});
+  std::int64_t* target = array.mutable_data();
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (std::size_t c = 0; c < 3; ++c) target[3 * t + c] = triangles[t][c];
+  return array;
+}
+
+bool same_mesh(const TriangleMesh& a, const TriangleMesh& b) {
+  return a.vertices == b.vertices && a.normals == b.normals && a.triangles == b.triangles;
+}
+
+/// A surface object (any kind) as a view; the object must outlive it.
+SurfaceView view_of(const py::handle& object, std::size_t index) {
+  if (py::isinstance<BSplineSurface>(object)) return SurfaceView(object.cast<const BSplineSurface&>());
+  if (py::isinstance<BezierSurface>(object)) return SurfaceView(object.cast<const BezierSurface&>());
+  if (py::isinstance<CoonsPatch>(object)) return SurfaceView(object.cast<const CoonsPatch&>());
+  throw py::type_error(fmt::format("surfaces[{}] is a {}, expected a BSplineSurface, BezierSurface or CoonsPatch",
+                                   index, std::string(py::str(py::type::of(object).attr("__name__")))));
+}
+
+void check_unit_parameter(double t, const char* what) {
+  if (!std::isfinite(t) || t < 0.0 || t > 1.0) {
+    throw py::value_error(fmt::format("{} is {}, it must lie in [0, 1]", what, t));
+  }
+}
+
+}  // namespace
+
+void bind_ops(py::module_& module) {
+  // --- flattening --------------------------------------------------------------
+  module.def(
+      "flatten",
+      [](const BezierCurve& curve, double tolerance, const py::object& max_segments) {
+        const Tolerance checked = tolerance_from(tolerance, "tolerance");
+        long cap = tolerances::kMaxFlattenSegments;
+        if (!max_segments.is_none()) {
+          cap = max_segments.cast<long>();
+          if (cap < 1 || cap > tolerances::kMaxFlattenSegments) {
+            throw py::value_error(fmt::format("max_segments is {}, it must lie in 1..{}", cap,
+                                              tolerances::kMaxFlattenSegments));
+          }
+        }
+        Expected<Polyline> line = Error{};
+        {
+          py::gil_scoped_release release;
+          line = flatten(curve, checked, cap);
+        }
+        Polyline polyline = unwrap(std::move(line));
+        return py::make_tuple(to_numpy(polyline.points), to_numpy(std::span<const double>(polyline.parameters)));
+      },
+      py::arg("curve"), py::arg("tolerance"), py::arg("max_segments") = py::none(),
+      "A polyline through points of the Bézier curve within `tolerance` of it (Hausdorff distance, certified "
+      "by chord_deviation_bound; docs/flattening.md), as a tuple (points (m+1, d), parameters (m+1,)) with "
+      "parameters 0 = t_0 < ... < t_m = 1 (the C++ returns a Polyline). max_segments: an optional cap (ValueError, "
+      "not a truncated polyline, when more are needed). The GIL is released.");
+
+  module.def(
+      "flatten_segment_count",
+      [](const BezierCurve& curve, double tolerance) {
+        const Tolerance checked = tolerance_from(tolerance, "tolerance");
+        Expected<long> count = Error{};
+        {
+          py::gil_scoped_release release;
+          count = flatten_segment_count(curve, checked);
+        }
+        return unwrap(std::move(count));
+      },
+      py::arg("curve"), py::arg("tolerance"),
+      "The number of segments flatten() produces for this curve and tolerance, without building the polyline.");
+
+  module.def(
+      "control_polygon_flatness", [](const BezierCurve& curve) { return control_polygon_flatness(curve); },
+      py::arg("curve"),
+      "A certified upper bound on the distance from the curve to its chord [C(0), C(1)]: the largest distance from "
+      "a control point to that segment (convex hull property).");
+
+  module.def(
+      "chord_deviation_bound",
+      [](const BezierCurve& curve, double t0, double t1) {
+        check_unit_parameter(t0, "t0");
+        check_unit_parameter(t1, "t1");
+        if (!(t0 < t1)) throw py::value_error(fmt::format("t0 = {} must be smaller than t1 = {}", t0, t1));
+        return chord_deviation_bound(curve, t0, t1);
+      },
+      py::arg("curve"), py::arg("t0"), py::arg("t1"),
+      "A certified upper bound on the distance from C restricted to [t0, t1] (0 <= t0 < t1 <= 1) to the segment "
+      "[C(t0), C(t1)] (exact for plane cubics, convex hull of the halves otherwise; docs/flattening.md).");
+
+  // --- meshes ------------------------------------------------------------------
+  py::class_<TriangleMesh>(module, "TriangleMesh",
+                           "An indexed triangle mesh in R^3 with one unit normal per vertex: the output of "
+                           "tessellate and the input of the OBJ, STL and PLY writers. Triangles are "
+                           "counter-clockwise seen from the side the normals point to.")
+      .def(py::init(&make_mesh), py::arg("vertices"), py::arg("normals"), py::arg("triangles"),
+           "A mesh from vertices (n, 3), normals (n, 3), both finite, and triangles (m, 3) of integer vertex indices "
+           "in [0, n). ValueError names the bad entry; TypeError for non-integer triangles.")
+      .def_property_readonly("vertices", [](const TriangleMesh& m) { return points3_to_numpy(m.vertices); },
+                             "Vertex positions, an (n, 3) array (a new array).")
+      .def_property_readonly("normals", [](const TriangleMesh& m) { return points3_to_numpy(m.normals); },
+                             "One unit normal per vertex, an (n, 3) array (a new array).")
+      .def_property_readonly("triangles", [](const TriangleMesh& m) { return triangles_to_numpy(m.triangles); },
+                             "Vertex indices, an (m, 3) int64 array (a new array).")
+      .def("__eq__", [](const TriangleMesh& a, const TriangleMesh& b) { return same_mesh(a, b); }, py::is_operator())
+      .def("__repr__",
+           [](const TriangleMesh& m) {
+             return fmt::format("TriangleMesh({} vertices, {} triangles)", m.vertices.size(), m.triangles.size());
+           })
+      .def(py::pickle(
+          [](const TriangleMesh& m) {
+            return py::make_tuple(points3_to_numpy(m.vertices), points3_to_numpy(m.normals),
+                                  triangles_to_numpy(m.triangles));
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 3) throw py::value_error("TriangleMesh pickle state must have 3 entries");
+            return make_mesh(state[0], state[1], state[2]);
+          }));
+
+  py::class_<MeshTopology>(module, "MeshTopology",
+                           "How the triangles of a mesh meet along their edges (mesh_topology's counts).")
+      .def_readonly("boundary_edges", &MeshTopology::boundary_edges, "Edges used by exactly one triangle.")
+      .def_readonly("non_manifold_edges", &MeshTopology::non_manifold_edges, "Edges used by three or more triangles.")
+      .def_readonly("inconsistently_oriented_edges", &MeshTopology::inconsistently_oriented_edges,
+                    "Edges used twice with the same orientation.")
+      .def_readonly("degenerate_triangles", &MeshTopology::degenerate_triangles,
+                    "Triangles with two equal vertex indices or zero area.")
+      .def_property_readonly("watertight", &MeshTopology::watertight,
+                             "True when closed and edge-manifold: every edge has exactly two triangles, used in "
+                             "opposite directions, and no triangle is degenerate.")
+      .def("__eq__",
+           [](const MeshTopology& a, const MeshTopology& b) {
+             return a.boundary_edges == b.boundary_edges && a.non_manifold_edges == b.non_manifold_edges &&
+                    a.inconsistently_oriented_edges == b.inconsistently_oriented_edges &&
+                    a.degenerate_triangles == b.degenerate_triangles;
+           },
+           py::is_operator())
+      .def("__repr__", [](const MeshTopology& t) {
+        return fmt::format("MeshTopology(boundary_edges={}, non_manifold_edges={}, inconsistently_oriented_edges={}, "
+                           "degenerate_triangles={}, watertight={})",
+                           t.boundary_edges, t.non_manifold_edges, t.inconsistently_oriented_edges,
+                           t.degenerate_triangles, t.watertight() ? "True" : "False");
+      });
+
+  module.def(
+      "mesh_topology",
+      [](const TriangleMesh& mesh) {
+        py::gil_scoped_release release;
+        return mesh_topology(mesh);
+      },
+      py::arg("mesh"),
+      "Counts the mesh's boundary, non-manifold and inconsistently oriented edges and degenerate triangles (an "
+      "edge map, O(t log t)), as a MeshTopology.");
+
+  module.def(
+      "tessellate",
+      [](const py::object& surfaces, double tolerance) {
+        const Tolerance checked = tolerance_from(tolerance, "tolerance");
+        // The objects are held here for the whole call: the views point into them.
+        std::vector<py::object> held;
+        const bool one = py::isinstance<BSplineSurface>(surfaces) || py::isinstance<BezierSurface>(surfaces) ||
+                         py::isinstance<CoonsPatch>(surfaces);
+        if (one) {
+          held.push_back(surfaces);
+        } else {
+          if (py::isinstance<py::str>(surfaces) || !py::isinstance<py::iterable>(surfaces)) {
+            throw py::type_error("surfaces must be a surface (BSplineSurface, BezierSurface, CoonsPatch) or a "
+                                 "sequence of them");
+          }
+          for (const py::handle item : surfaces) held.push_back(py::reinterpret_borrow<py::object>(item));
+        }
+        std::vector<SurfaceView> views;
+        views.reserve(held.size());
+        for (std::size_t k = 0; k < held.size(); ++k) views.push_back(view_of(held[k], k));
+        Expected<TriangleMesh> mesh = Error{};
+        {
+          py::gil_scoped_release release;
+          mesh = tessellate(views, checked);
+        }
+        return unwrap(std::move(mesh));
+      },
+      py::arg("surfaces"), py::arg("tolerance"),
+      "A TriangleMesh of the surfaces (one surface of any kind, or a sequence of them, all in R^3) within "
+      "`tolerance` of them, watertight across shared boundaries and seams (adaptive quadtree per patch, "
+      "docs/surfaces.md). Normals are the surfaces' unit normals. The GIL is released.");
+}
+
 }  // namespace casteljau::python
