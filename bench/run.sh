@@ -7,7 +7,8 @@
 # Exits non-zero if a binary fails or a row reported an error (a benchmark
 # whose output check failed calls SkipWithError).
 #
-# W1/W2 rows of scipy come from bench/w1_scipy.py, W4 rows from
+# W1/W2 rows of scipy come from bench/w1_scipy.py, the Python module's W1 rows
+# from bench/w1_python.py, W4 rows from
 # bench/w4_scipy.py and the W5 row from bench/w5_scipy.py (run by
 # /usr/bin/python3, pinned the same way) when Debian's scipy is installed.
 #
@@ -112,11 +113,12 @@ for binary in "${binaries[@]}"; do
   summarize "$json" || status=1
 done
 
-# The scipy rows (bench/w<k>_scipy.py), when Debian's scipy is there and the
-# filter matches one of the script's row names: run_scipy SCRIPT "ROW NAMES"
-# [extra arguments]. W1/W2: BSpline; W4: make_interp_spline and CubicSpline;
-# W5: bisplev on the same knots and coefficients.
-run_scipy() {
+# The rows measured from Python (bench/w<k>_scipy.py, bench/w1_python.py),
+# when Debian's scipy is there and the filter matches one of the script's row
+# names: run_python_rows SCRIPT "ROW NAMES" [extra arguments]. W1/W2: scipy's
+# BSpline and casteljau's Python module; W4: make_interp_spline and
+# CubicSpline; W5: bisplev on the same knots and coefficients.
+run_python_rows() {
   local script="$1" rows="$2"
   shift 2
   [[ "$rows" =~ $filter ]] || return 0
@@ -132,8 +134,11 @@ run_scipy() {
     status=1
   fi
 }
-run_scipy w1_scipy.py "W1/sorted/scipy-BSpline W1/random/scipy-BSpline W2/sorted/scipy-BSpline"
-run_scipy w4_scipy.py "W4/n10000/scipy-make_interp_spline-natural W4/n1000000/scipy-CubicSpline-periodic" \
+run_python_rows w1_scipy.py "W1/sorted/scipy-BSpline W1/random/scipy-BSpline W2/sorted/scipy-BSpline"
+if [[ -d "${CASTELJAU_PYTHONPATH:-build-bench/python}/casteljau" ]]; then
+  run_python_rows w1_python.py "W1/sorted/casteljau-python W1/random/casteljau-python-alloc" --filter "$filter"
+fi
+run_python_rows w4_scipy.py "W4/n10000/scipy-make_interp_spline-natural W4/n1000000/scipy-CubicSpline-periodic" \
   --filter "$filter"
-run_scipy w5_scipy.py "W5/grid/scipy-bisplev"
+run_python_rows w5_scipy.py "W5/grid/scipy-bisplev"
 exit $status

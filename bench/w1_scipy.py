@@ -15,15 +15,13 @@ stdout or to --out, so bench/run.sh summarizes it like the C++ rows.
 
 Run with /usr/bin/python3 (Debian's numpy and scipy).
 """
-import argparse
-import statistics
 import sys
 import time
 
 import numpy as np
 from scipy.interpolate import BSpline
 
-from benchmark_json import write_benchmark_json
+from benchmark_json import benchmark_arguments, timed_rows, write_benchmark_json
 from seeded_data import splitmix_units, clamped_uniform_knots
 
 DEGREE = 3
@@ -48,11 +46,7 @@ def de_boor(t, c, p, u):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--repetitions", type=int, default=3)
-    parser.add_argument("--out", default="-")
-    parser.add_argument("--filter", default="")
-    args = parser.parse_args()
+    args = benchmark_arguments()
 
     control = (SCALE * splitmix_units(20261122, CONTROL_POINTS * 3)).reshape(CONTROL_POINTS, 3)
     knots = clamped_uniform_knots(DEGREE, CONTROL_POINTS)
@@ -85,22 +79,9 @@ def main():
                 error = max(error, float(np.max(np.abs(points[i] - point))) / SCALE)
                 if derivatives is not None:
                     error = max(error, float(np.max(np.abs(derivatives[i] - slope))) / derivative_scale)
-            base = {"name": name + "/real_time", "run_name": name + "/real_time", "family_index": 1000,
-                    "per_family_instance_index": 0, "repetitions": args.repetitions, "threads": 1,
-                    "time_unit": "ms", "max_error_rel": error}
-            if not error <= BOUND:
-                failed = True
-                rows.append(dict(base, run_type="iteration", repetition_index=0, error_occurred=True,
-                                 error_message=f"relative error {error:g} exceeds the bound"))
-                continue
-            for index, seconds in enumerate(times):
-                rows.append(dict(base, run_type="iteration", repetition_index=index, iterations=1,
-                                 real_time=seconds * 1e3, cpu_time=seconds * 1e3,
-                                 items_per_second=PARAMETERS / seconds))
-            median = statistics.median(times)
-            rows.append(dict(base, name=name + "/real_time_median", run_type="aggregate", aggregate_name="median",
-                             iterations=args.repetitions, real_time=median * 1e3, cpu_time=median * 1e3,
-                             items_per_second=PARAMETERS / median))
+            new_rows = timed_rows(name, times, PARAMETERS, error, BOUND, 1000)
+            failed |= "error_occurred" in new_rows[0]
+            rows += new_rows
     write_benchmark_json(rows, args.out)
     return 1 if failed else 0
 

@@ -17,7 +17,6 @@ than 1e-9 of the scale (99). Prints Google Benchmark's JSON to stdout or to
 
 Run with /usr/bin/python3 (Debian's numpy and scipy).
 """
-import argparse
 import statistics
 import sys
 import time
@@ -25,7 +24,7 @@ import time
 import numpy as np
 from scipy.interpolate import BSpline, bisplev
 
-from benchmark_json import write_benchmark_json
+from benchmark_json import benchmark_arguments, write_benchmark_json
 from seeded_data import splitmix_units, clamped_uniform_knots
 
 DEGREE = 3
@@ -38,11 +37,7 @@ NAME = "W5/grid/scipy-bisplev"
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--repetitions", type=int, default=3)
-    parser.add_argument("--out", default="-")
-    parser.add_argument("--filter", default="")
-    args = parser.parse_args()
+    args = benchmark_arguments()
 
     net = np.zeros((NET, NET, 3))
     net[:, :, 0] = np.arange(NET)[:, None]
