@@ -104,7 +104,7 @@ class BSpline:
     ``integrate`` with extrapolate=False over an interval outside [t[k], t[n]] gives 0 (scipy gives NaN
     for 2-D c); ``derivative(nu)`` on a spline with a knot of
     multiplicity k+1 inside returns the piecewise derivative (scipy raises);
-    no ``design_matrix``, ``from_power_basis``, ``tck``.
+    no ``design_matrix`` or ``from_power_basis``.
     """
 
     def __init__(self, t, c, k, extrapolate=True, axis=0):
@@ -207,6 +207,15 @@ class BSpline:
         x = _real_array(x, "x")
         shape = x.shape
         xs = np.ascontiguousarray(x.reshape(-1))
+        out = np.empty((xs.size, curve.dimension))
+        if extrapolate != "periodic":
+            # One compiled call when every x is finite (and inside, without
+            # extrapolation): the kernel checks them as it evaluates.
+            try:
+                self._evaluate(curve, xs, nu, out, bool(extrapolate))
+                return out.reshape(shape + self.c.shape[1:])
+            except ValueError:
+                pass  # NaN, infinite or outside x: scipy's NaN rows, below
         lower, upper = self._base_interval()
         if extrapolate == "periodic":
             xs = lower + (xs - lower) % (upper - lower)
@@ -222,14 +231,18 @@ class BSpline:
             xs = np.where(outside, lower, xs)
         else:
             outside = None
-        out = np.empty((xs.size, curve.dimension))
-        if nu == 0:
-            _c.points_at(curve, xs, out=out, extrapolate=True)
-        else:
-            _c.derivatives_at(curve, xs, nu, out=out, extrapolate=True)
+        self._evaluate(curve, xs, nu, out, True)
         if outside is not None:
             out[outside] = np.nan
         return out.reshape(shape + self.c.shape[1:])
+
+    @staticmethod
+    def _evaluate(curve, xs, nu, out, extrapolate):
+        """C^(nu) at the (k,) array xs into out, by the compiled batch kernels."""
+        if nu == 0:
+            _c.points_at(curve, xs, out=out, extrapolate=extrapolate)
+        else:
+            _c.derivatives_at(curve, xs, nu, out=out, extrapolate=extrapolate)
 
     # --- calculus --------------------------------------------------------------------------
 
