@@ -3,27 +3,39 @@
 // 10^6 parameters uniform in [0,1), (a) sorted, (b) in drawn (random)
 // order; W1 writes the points, W2 the points and first derivatives, into
 // preallocated arrays. Data from fixed splitmix64 streams.
-// Rows: W1/sorted/<impl>, W1/random/<impl>, W2/sorted/<impl>, W2/random/<impl>.
+// Rows: W1/sorted/<impl>, W1/random/<impl>, W2/sorted/<impl>, W2/random/<impl>;
+// with CASTELJAU_BENCH_ALL_CORES=1 only W1/<order>/casteljau-all-cores
+// (bench/all_cores.hpp).
 //
-// Every row checks its output after timing against casteljau's scalar
-// point_at / derivative_at(u, 1) on every 1000th parameter and fails
-// (SkipWithError) if a coordinate differs by more than kRelativeBound
-// times the scale (100 for points; the largest derivative coordinate of
-// the sample for derivatives). The row reports the largest difference as
-// max_error_rel. The casteljau rows also require bit-for-bit equality with
-// the scalar functions.
+// Every row checks its output after timing on every 1000th parameter against
+// the exact point (and first derivative), computed once in GMP rationals from
+// the exact values of the doubles (tests/support/exact_bspline.hpp: de Boor;
+// the derivative by de Boor on the exact hodograph, NURBS Book eq. 3.8), and
+// fails (SkipWithError) if a coordinate differs by more than kRelativeBound
+// times the scale (100 for points; the largest derivative coordinate of the
+// sample for derivatives). The row reports the largest difference as
+// max_error_rel. The casteljau rows must also equal the scalar point_at /
+// derivative_at(u, 1) bit for bit. Without GMP the scalar functions are the
+// reference.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "all_cores.hpp"
 #include "support/splitmix.hpp"
+
+#if defined(CASTELJAU_HAVE_GMP)
+#include "support/exact.hpp"
+#include "support/exact_bspline.hpp"
+#endif
 
 #if __has_include(<unsupported/Eigen/Splines>)
 #include <unsupported/Eigen/Splines>
@@ -98,6 +110,17 @@ void run_casteljau(const std::vector<double>& us, double* points, double* deriva
   } else {
     casteljau::points_at(curve, us, {points, us.size() * 3});
   }
+}
+
+/// The same batch on every usable core: one contiguous chunk of parameters
+/// per thread, each through points_at (chunks are whole 64-parameter blocks).
+void run_casteljau_all_cores(const std::vector<double>& us, double* points, double*) {
+  const BSplineCurve& curve = data().curve;
+  static const int threads = casteljau::bench::usable_cpus();
+  casteljau::bench::run_chunks(us.size(), 64, threads, [&](std::size_t begin, std::size_t end) {
+    casteljau::points_at(curve, std::span<const double>(us).subspan(begin, end - begin),
+                         {points + 3 * begin, 3 * (end - begin)});
+  });
 }
 
 // --- textbook: The NURBS Book A2.1 (span), A2.2 / A2.3 (basis), A3.1 / A3.2 ---------
@@ -308,38 +331,82 @@ void run_sisl(const std::vector<double>& us, double* points, double* derivatives
 
 // --- rows ---------------------------------------------------------------------------------
 
-/// Largest difference from the scalar reference on the sample, relative to the
-/// scale (points: 100; derivatives: the largest derivative coordinate), and
-/// whether every sampled coordinate matched bit for bit.
+/// The reference at every kCheckStride-th parameter: coordinates of the
+/// points, then of the first derivatives, as exact rationals when GMP is
+/// there, else the scalar point_at / derivative_at(u, 1).
+struct Reference {
+#if defined(CASTELJAU_HAVE_GMP)
+  using Value = mpq_class;
+#else
+  using Value = double;
+#endif
+  std::vector<Value> points, derivatives;  // 3 per sample
+  double derivative_scale = 0.0;           // the largest |derivative coordinate| of the sample
+};
+
+Reference make_reference(const std::vector<double>& us) {
+  Reference r;
+  const BSplineCurve& curve = data().curve;
+#if defined(CASTELJAU_HAVE_GMP)
+  const casteljau::test::ExactBSpline exact = casteljau::test::ExactBSpline::of(curve);
+  const casteljau::test::ExactBSpline hodograph = exact.derivative();
+#endif
+  for (std::size_t k = 0; k < us.size(); k += kCheckStride) {
+#if defined(CASTELJAU_HAVE_GMP)
+    for (mpq_class& x : exact.point_at(mpq_class(us[k]))) r.points.push_back(std::move(x));
+    for (mpq_class& x : hodograph.point_at(mpq_class(us[k]))) {
+      r.derivative_scale = std::max(r.derivative_scale, std::abs(x.get_d()));
+      r.derivatives.push_back(std::move(x));
+    }
+#else
+    for (double x : casteljau::point_at(curve, us[k])) r.points.push_back(x);
+    for (double x : casteljau::derivative_at(curve, us[k], 1)) {
+      r.derivative_scale = std::max(r.derivative_scale, std::abs(x));
+      r.derivatives.push_back(x);
+    }
+#endif
+  }
+  return r;
+}
+
+const Reference& reference(bool sorted) {
+  static const Reference sorted_reference = make_reference(data().sorted);
+  static const Reference random_reference = make_reference(data().random);
+  return sorted ? sorted_reference : random_reference;
+}
+
+double difference(double value, const Reference::Value& exact) {
+  if (!std::isfinite(value)) return INFINITY;
+#if defined(CASTELJAU_HAVE_GMP)
+  return casteljau::test::error_of(value, exact);
+#else
+  return std::abs(value - exact);
+#endif
+}
+
+/// Largest difference from the reference on the sample, relative to the
+/// scale, and whether every sampled coordinate equals the scalar functions'
+/// bit for bit.
 struct Check {
   double error = 0.0;
   bool bitwise = true;
 };
 
-Check check(const std::vector<double>& us, const double* points, const double* derivatives) {
+Check check(bool sorted, const double* points, const double* derivatives) {
+  const std::vector<double>& us = sorted ? data().sorted : data().random;
+  const Reference& r = reference(sorted);
   Check result;
-  double derivative_scale = 0.0;
-  std::vector<casteljau::Point> references;
-  for (std::size_t k = 0; k < us.size(); k += kCheckStride) {
-    if (derivatives) {
-      references.push_back(casteljau::derivative_at(data().curve, us[k], 1));
-      for (double x : references.back()) derivative_scale = std::max(derivative_scale, std::abs(x));
-    }
-  }
   std::size_t sample = 0;
   for (std::size_t k = 0; k < us.size(); k += kCheckStride, ++sample) {
     const casteljau::Point point = casteljau::point_at(data().curve, us[k]);
+    const casteljau::Point slope = derivatives ? casteljau::derivative_at(data().curve, us[k], 1) : casteljau::Point{};
     for (std::size_t j = 0; j < 3; ++j) {
-      const double value = points[3 * k + j];
-      const double error = std::isfinite(value) ? std::abs(value - point[j]) / kScale : INFINITY;
-      result.error = std::max(result.error, error);
-      result.bitwise &= value == point[j];
+      result.error = std::max(result.error, difference(points[3 * k + j], r.points[3 * sample + j]) / kScale);
+      result.bitwise &= points[3 * k + j] == point[j];
       if (derivatives) {
-        const double slope = derivatives[3 * k + j];
-        const double reference = references[sample][j];
-        const double slope_error = std::isfinite(slope) ? std::abs(slope - reference) / derivative_scale : INFINITY;
-        result.error = std::max(result.error, slope_error);
-        result.bitwise &= slope == reference;
+        result.error = std::max(result.error,
+                                difference(derivatives[3 * k + j], r.derivatives[3 * sample + j]) / r.derivative_scale);
+        result.bitwise &= derivatives[3 * k + j] == slope[j];
       }
     }
   }
@@ -359,12 +426,23 @@ void run_row(benchmark::State& state, bool derivative, bool sorted, Implementati
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(us.size()));
-  const Check c = check(us, d.points.data(), derivatives);
+  const Check c = check(sorted, d.points.data(), derivatives);
   state.counters["max_error_rel"] = c.error;
   if (!(c.error <= kRelativeBound)) {
     state.SkipWithError(("relative error " + std::to_string(c.error) + " exceeds the bound").c_str());
   } else if (bitwise && !c.bitwise) {
     state.SkipWithError("batch result differs from the scalar functions");
+  }
+}
+
+/// CASTELJAU_BENCH_ALL_CORES=1: the all-core rows, unpinned (bench/run.sh).
+void register_all_core_rows() {
+  for (int sorted = 1; sorted >= 0; --sorted) {
+    const std::string name = std::string("W1/") + (sorted ? "sorted" : "random") + "/casteljau-all-cores";
+    benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
+      run_row(state, false, sorted == 1, &run_casteljau_all_cores, true);
+      state.counters["threads"] = casteljau::bench::usable_cpus();
+    })->Unit(benchmark::kMillisecond)->UseRealTime();
   }
 }
 
@@ -398,7 +476,11 @@ void register_rows() {
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  register_rows();
+  if (casteljau::bench::all_cores_run()) {
+    register_all_core_rows();
+  } else {
+    register_rows();
+  }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

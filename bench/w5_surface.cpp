@@ -4,25 +4,34 @@
 // evaluated on a 1000 x 1000 grid of (u, v) evenly spaced over the domain
 // (u_a = a/999, v_b = b/999, the ends exact); one iteration writes the 10^6
 // points (3 doubles each, u the slow index) into a preallocated buffer.
-// Rows: W5/grid/<implementation>.
+// Rows: W5/grid/<implementation>; with CASTELJAU_BENCH_ALL_CORES=1 only
+// W5/grid/casteljau-all-cores (bench/all_cores.hpp).
 //
-// Every row checks its output after timing against casteljau's scalar
-// point_at on every 997th grid point (a stride prime to 1000, so the sample
-// visits every row and column position) and fails (SkipWithError) if a
-// coordinate differs by more than kRelativeBound times the scale (99, the
-// largest coordinate); the row reports the largest difference as
-// max_error_rel.
+// Every row checks its output after timing on every 997th grid point (a
+// stride prime to 1000, so the sample visits every row and column position)
+// against the exact point, computed once in GMP rationals from the
+// definition (tests/support/exact_surface.hpp; without GMP, casteljau's
+// scalar point_at), and fails (SkipWithError) if a coordinate differs by
+// more than kRelativeBound times the scale (99, the largest coordinate); the
+// row reports the largest difference as max_error_rel.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/surfaces/evaluate.hpp"
+#include "all_cores.hpp"
 #include "support/splitmix.hpp"
+
+#if defined(CASTELJAU_HAVE_GMP)
+#include "support/exact.hpp"
+#include "support/exact_surface.hpp"
+#endif
 
 #if defined(CASTELJAU_HAVE_OCCT)
 #include <GeomAdaptor_Surface.hxx>
@@ -96,6 +105,17 @@ using Implementation = void (*)(double* points);
 void run_casteljau(double* points) {
   const Data& d = data();
   casteljau::grid_points_at(d.surface, d.us, d.vs, {points, kGrid * kGrid * 3});
+}
+
+/// The grid on every usable core: one contiguous block of u rows per thread,
+/// each through grid_points_at.
+void run_casteljau_all_cores(double* points) {
+  const Data& d = data();
+  static const int threads = casteljau::bench::usable_cpus();
+  casteljau::bench::run_chunks(kGrid, 1, threads, [&](std::size_t begin, std::size_t end) {
+    casteljau::grid_points_at(d.surface, std::span<const double>(d.us).subspan(begin, end - begin), d.vs,
+                              {points + 3 * kGrid * begin, 3 * kGrid * (end - begin)});
+  });
 }
 
 /// The scattered batch on the same 10^6 (u, v) pairs: what a caller without a grid pays.
@@ -196,14 +216,43 @@ void run_sisl(double* points) {
 }
 #endif
 
+#if defined(CASTELJAU_HAVE_GMP)
+using Exact = mpq_class;
+#else
+using Exact = double;
+#endif
+
+/// The reference coordinates at every kCheckStride-th grid point, computed once.
+const std::vector<Exact>& reference() {
+  static const std::vector<Exact> values = [] {
+    const Data& d = data();
+    std::vector<Exact> out;
+    for (std::size_t k = 0; k < kGrid * kGrid; k += kCheckStride) {
+      const double u = d.us[k / kGrid], v = d.vs[k % kGrid];
+#if defined(CASTELJAU_HAVE_GMP)
+      for (mpq_class& x : casteljau::test::exact_surface_point(d.surface, u, v)) out.push_back(std::move(x));
+#else
+      for (double x : casteljau::point_at(d.surface, u, v)) out.push_back(x);
+#endif
+    }
+    return out;
+  }();
+  return values;
+}
+
 double check(const double* points) {
-  const Data& d = data();
+  const std::vector<Exact>& exact = reference();
   double error = 0.0;
-  for (std::size_t k = 0; k < kGrid * kGrid; k += kCheckStride) {
-    const casteljau::Point point = casteljau::point_at(d.surface, d.us[k / kGrid], d.vs[k % kGrid]);
+  std::size_t sample = 0;
+  for (std::size_t k = 0; k < kGrid * kGrid; k += kCheckStride, ++sample) {
     for (std::size_t j = 0; j < 3; ++j) {
       const double value = points[3 * k + j];
-      error = std::max(error, std::isfinite(value) ? std::abs(value - point[j]) / kScale : INFINITY);
+#if defined(CASTELJAU_HAVE_GMP)
+      const double difference = casteljau::test::error_of(value, exact[3 * sample + j]);
+#else
+      const double difference = std::abs(value - exact[3 * sample + j]);
+#endif
+      error = std::max(error, std::isfinite(value) ? difference / kScale : INFINITY);
     }
   }
   return error;
@@ -248,7 +297,17 @@ void register_rows() {
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  register_rows();
+  if (casteljau::bench::all_cores_run()) {
+    benchmark::RegisterBenchmark("W5/grid/casteljau-all-cores",
+                                 [](benchmark::State& state) {
+                                   run_row(state, &run_casteljau_all_cores);
+                                   state.counters["threads"] = casteljau::bench::usable_cpus();
+                                 })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  } else {
+    register_rows();
+  }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

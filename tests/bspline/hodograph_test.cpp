@@ -16,6 +16,7 @@
 #include "support/bspline_generators.hpp"
 #include "support/exact.hpp"
 #include "support/exact_basis.hpp"
+#include "support/exact_bspline.hpp"
 #include "support/generators.hpp"
 
 namespace casteljau {
@@ -106,6 +107,18 @@ RC_GTEST_PROP(DerivativeCurve, EqualsTheExactDerivative, ()) {
     const Point direct = derivative_at(curve, u, k);
     const Point via_curve = point_at(derivative, u);
     RC_ASSERT(distance(direct, via_curve) <= 1e-10 * std::max(1.0, scale_of(derivative.control_points())));
+  }
+}
+
+// The exact hodograph of the test support (the W1/W2 benchmark's reference
+// for derivatives) against the exact basis derivatives: two exact routes.
+RC_GTEST_PROP(ExactHodograph, EqualsTheExactBasisDerivatives, ()) {
+  const auto curve = *test::bspline_curve({.max_degree = 6, .rational = test::Rational::never});
+  RC_PRE(curve.degree() >= 1);
+  const test::ExactBSpline hodograph = test::ExactBSpline::of(curve).derivative();
+  for (int sample = 0; sample < 4; ++sample) {
+    const double u = *test::parameter_in(curve);
+    RC_ASSERT(hodograph.point_at(mpq_class(u)) == test::exact_bspline_derivative(curve, u, 1));
   }
 }
 

@@ -12,6 +12,7 @@
 #include <gmpxx.h>
 
 #include <cassert>
+#include <stdexcept>
 #include <vector>
 
 #include "casteljau/bspline/bspline_curve.hpp"
@@ -66,6 +67,29 @@ struct ExactBSpline {
     std::vector<mpq_class> point;
     for (int c = 0; c < dimension; ++c) point.push_back(d[p][c] / d[p][dimension]);
     return point;
+  }
+
+  /// The derivative curve of a polynomial B-spline (The NURBS Book eq. 3.8):
+  /// degree p-1 on the knots without their first and last, control points
+  /// Q_i = p (P_{i+1} - P_i) / (t_{i+p+1} - t_{i+1}), i = 0..n-1 (Q_i = 0
+  /// when that knot span is empty: its basis function is zero). Its
+  /// point_at is C'(u) exactly.
+  ExactBSpline derivative() const {
+    for (const auto& row : rows)
+      if (degree < 1 || row.back() != 1) throw std::logic_error("ExactBSpline::derivative: polynomial, degree >= 1");
+    ExactBSpline out;
+    out.degree = degree - 1;
+    out.dimension = dimension;
+    out.knots.assign(knots.begin() + 1, knots.end() - 1);
+    for (int i = 0; i < last_index(); ++i) {
+      const mpq_class width = knots[i + degree + 1] - knots[i + 1];
+      const mpq_class factor = width == 0 ? mpq_class(0) : mpq_class(degree) / width;
+      std::vector<mpq_class> row;
+      for (int c = 0; c < dimension; ++c) row.push_back(factor * (rows[i + 1][c] - rows[i][c]));
+      row.push_back(1);
+      out.rows.push_back(std::move(row));
+    }
+    return out;
   }
 
   /// Boehm's insertion of u once (u inside the domain, multiplicity < p+1):
