@@ -23,7 +23,7 @@ ifeq ($(CI),true)
   CMAKE_FLAGS += -DCASTELJAU_WERROR=ON
 endif
 
-.PHONY: all deps bench-deps build python asan wasm test demo bench clean
+.PHONY: all deps bench-deps build python asan wasm test demo bench bench-publish clean
 
 all: build
 
@@ -85,10 +85,20 @@ demo: build
 	rm -rf out/gallery && mv out/gallery.tmp out/gallery
 	@echo "make demo: gallery written to out/gallery/index.html ($$(ls out/gallery/*.svg | wc -l) SVG, $$(ls out/gallery/*.png | wc -l) PNG)"
 
+# Builds build-bench/ and runs bench/run.sh: out/bench/results.json and
+# out/bench/RESULTS.md (the build time is reported there too).
 bench: bench-deps
-	cmake --preset bench $(CMAKE_FLAGS) >/dev/null
-	cmake --build --preset bench -j $(JOBS)
-	bash bench/run.sh
+	@started=$$(date +%s); \
+	cmake --preset bench $(CMAKE_FLAGS) >/dev/null && \
+	cmake --build --preset bench -j $(JOBS) && \
+	CASTELJAU_BENCH_BUILD_SECONDS=$$(( $$(date +%s) - started )) bash bench/run.sh
+
+# Publishes the last `make bench` run: out/bench/RESULTS.md becomes
+# docs/RESULTS.md and its summary the README's performance table.
+bench-publish:
+	@test -f out/bench/RESULTS.md || { echo "no out/bench/RESULTS.md: run make bench first"; exit 1; }
+	cp out/bench/RESULTS.md docs/RESULTS.md
+	$(PYTHON) bench/report.py readme --results docs/RESULTS.md --readme README.md
 
 clean:
 	rm -rf build build-asan build-wasm build-bench out

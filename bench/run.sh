@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
-# Runs every benchmark binary built in build-bench/bench/ (W1..W6, whichever
-# exist), each pinned to one core, 3 repetitions in random interleaving, and
-# writes Google Benchmark's JSON to out/bench/<name>.json (console output to
-# out/bench/<name>.txt). Then prints one line per row: median throughput,
-# min-max over the repetitions, and the accuracy counters the row reports.
+# Runs every benchmark binary built in build-bench/bench/ (the hardware probe
+# w0 first, then W1..W6, whichever exist), each pinned to one core, 3
+# repetitions in random interleaving, and writes Google Benchmark's JSON to
+# out/bench/<name>.json (console output to out/bench/<name>.txt). W1 and W5
+# run a second time unpinned with CASTELJAU_BENCH_ALL_CORES=1 for their
+# all-core rows (<name>-all-cores.json). Prints one line per row: median
+# throughput, min-max over the repetitions, and the accuracy counters the row
+# reports. Finally bench/report.py merges every file into
+# out/bench/results.json and writes out/bench/RESULTS.md.
 # Exits non-zero if a binary fails or a row reported an error (a benchmark
 # whose output check failed calls SkipWithError).
 #
@@ -14,7 +18,8 @@
 #
 # Environment: CASTELJAU_BENCH_DIR (default build-bench/bench),
 # CASTELJAU_BENCH_CPU (default 0), CASTELJAU_BENCH_OUT (default out/bench),
-# CASTELJAU_BENCH_FILTER (a --benchmark_filter regex, default all).
+# CASTELJAU_BENCH_FILTER (a --benchmark_filter regex, default all),
+# CASTELJAU_BENCH_BUILD_SECONDS (how long `make bench` spent building, for RESULTS.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -36,6 +41,9 @@ if [[ ${#binaries[@]} -eq 0 ]]; then
   exit 1
 fi
 
+started=$(date +%s)
+load_at_start="$(cut -d" " -f1-3 /proc/loadavg)"
+echo "started: $(date -u '+%Y-%m-%d %H:%M UTC')"
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
 # Prints one line per row of a Google Benchmark JSON file; fails if a row
 # reported an error.
@@ -90,27 +98,40 @@ sys.exit(1 if failed else 0)
 EOF
 }
 
-status=0
-for binary in "${binaries[@]}"; do
-  name="$(basename "$binary")"
-  json="$out_dir/$name.json"
-  echo "== $name -> $json"
-  if ! "${pin[@]}" "$binary" \
+# run_binary BINARY JSON [COMMAND PREFIX...]: one Google Benchmark binary.
+run_binary() {
+  local binary="$1" json="$2"
+  shift 2
+  local name
+  name="$(basename "$json" .json)"
+  echo "== $(basename "$binary") -> $json"
+  if ! "$@" "$binary" \
       --benchmark_filter="$filter" \
-      --benchmark_repetitions=3 \
+      --benchmark_repetitions=3 --benchmark_min_time=0.25 \
       --benchmark_enable_random_interleaving=true \
       --benchmark_report_aggregates_only=false \
       --benchmark_out="$json" --benchmark_out_format=json \
       >"$out_dir/$name.txt" 2>&1; then
     echo "   $name failed (see $out_dir/$name.txt)"
     status=1
-    continue
+    return
   fi
   if [[ ! -s "$json" ]]; then
     echo "   (no row of $name matches the filter '$filter')"
-    continue
+    return
   fi
   summarize "$json" || status=1
+}
+
+rm -f "$out_dir"/*.json "$out_dir"/*.txt "$out_dir/RESULTS.md"
+status=0
+for binary in "${binaries[@]}"; do
+  name="$(basename "$binary")"
+  run_binary "$binary" "$out_dir/$name.json" "${pin[@]}"
+  case "$name" in
+    w1_w2_bspline | w5_surface)
+      run_binary "$binary" "$out_dir/$name-all-cores.json" env CASTELJAU_BENCH_ALL_CORES=1 ;;
+  esac
 done
 
 # The rows measured from Python (bench/w<k>_scipy.py, bench/w1_python.py),
@@ -141,4 +162,9 @@ fi
 run_python_rows w4_scipy.py "W4/n10000/scipy-make_interp_spline-natural W4/n1000000/scipy-CubicSpline-periodic" \
   --filter "$filter"
 run_python_rows w5_scipy.py "W5/grid/scipy-bisplev"
+
+echo "== report -> $out_dir/results.json, $out_dir/RESULTS.md ($(( $(date +%s) - started )) s of benchmarks)"
+/usr/bin/python3 bench/report.py collect --dir "$out_dir" --seconds "$(( $(date +%s) - started ))" \
+  --build "$(dirname "$bench_dir")" --cpu "$cpu" --load "$load_at_start" \
+  --build-seconds "${CASTELJAU_BENCH_BUILD_SECONDS:-}" || status=1
 exit $status
