@@ -19,6 +19,11 @@ BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-model
   libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev
 
 CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON)
+# The bench build never gets -Werror: at -O3 -march=native GCC 12 warns inside
+# Eigen's AVX-512 packet code and libstdc++'s string concatenation
+# (-Wmaybe-uninitialized, -Wstringop-overflow: flow-analysis false positives the
+# -O2 builds of `make test` do not meet), and benchmarks are not what CI gates.
+BENCH_CMAKE_FLAGS := $(CMAKE_FLAGS)
 ifeq ($(CI),true)
   CMAKE_FLAGS += -DCASTELJAU_WERROR=ON
 endif
@@ -89,7 +94,7 @@ demo: build
 # out/bench/RESULTS.md (the build time is reported there too).
 bench: bench-deps
 	@started=$$(date +%s); \
-	cmake --preset bench $(CMAKE_FLAGS) >/dev/null && \
+	cmake --preset bench $(BENCH_CMAKE_FLAGS) >/dev/null && \
 	cmake --build --preset bench -j $(JOBS) && \
 	CASTELJAU_BENCH_BUILD_SECONDS=$$(( $$(date +%s) - started )) bash bench/run.sh
 
