@@ -174,11 +174,8 @@ def read_rows(directory):
         match = re.fullmatch(r"W(\d+)", row.workload)
         return int(match.group(1)) if match else -1  # the probe rows (HW) first
 
-    def headline_first(row):
-        return 0 if row.implementation in ("casteljau", *("casteljau-" + c for c in W4_CONDITIONS)) else 1
-
     ordered = sorted(registered, key=lambda r: (workload_number(r), variant_rank[(r.workload, r.variant)],
-                                                KIND_ORDER[r.kind], headline_first(r), r.order))
+                                                KIND_ORDER[r.kind], not is_headline(r), r.order))
     return OrderedDict((r.name, r) for r in ordered), entries, contexts
 
 
@@ -207,8 +204,7 @@ def compiler_of(build):
     if cache.exists():
         match = re.search(r"^CMAKE_CXX_COMPILER:\w+=(.*)$", cache.read_text(encoding="utf-8"), re.M)
         if match:
-            compiler = command_output([match.group(1), "--version"]).splitlines()[0:1]
-            compiler = compiler[0] if compiler else ""
+            compiler = command_output([match.group(1), "--version"]).partition("\n")[0]
     commands = Path(build) / "compile_commands.json"
     if commands.exists():
         for command in json.loads(commands.read_text(encoding="utf-8")):
@@ -401,14 +397,15 @@ def condition_of(row):
     return next((c for c in W4_CONDITIONS if row.implementation.endswith("-" + c)), "")
 
 
+def is_headline(row):
+    """Whether the row is casteljau's row of its variant: `casteljau`, or `casteljau-<condition>` in W4."""
+    if row.workload == "W4":
+        return row.implementation in ["casteljau-" + c for c in W4_CONDITIONS]
+    return row.workload.startswith("W") and row.implementation == "casteljau"
+
+
 def headline_rows(rows):
-    """casteljau's row of each variant: `casteljau`, or `casteljau-<condition>` in W4."""
-    for row in rows.values():
-        if row.workload == "W4":
-            if row.implementation in ("casteljau-" + c for c in W4_CONDITIONS):
-                yield row
-        elif row.workload.startswith("W") and row.implementation == "casteljau":
-            yield row
+    return (row for row in rows.values() if is_headline(row))
 
 
 def admissible_peer(row):

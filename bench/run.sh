@@ -163,8 +163,9 @@ run_python_rows w4_scipy.py "W4/n10000/scipy-make_interp_spline-natural W4/n1000
   --filter "$filter"
 run_python_rows w5_scipy.py "W5/grid/scipy-bisplev"
 
-echo "== report -> $out_dir/results.json, $out_dir/RESULTS.md ($(( $(date +%s) - started )) s of benchmarks)"
-/usr/bin/python3 bench/report.py collect --dir "$out_dir" --seconds "$(( $(date +%s) - started ))" \
+seconds=$(( $(date +%s) - started ))
+echo "== report -> $out_dir/results.json, $out_dir/RESULTS.md ($seconds s of benchmarks)"
+/usr/bin/python3 bench/report.py collect --dir "$out_dir" --seconds "$seconds" \
   --build "$(dirname "$bench_dir")" --cpu "$cpu" --load "$load_at_start" \
   --build-seconds "${CASTELJAU_BENCH_BUILD_SECONDS:-}" || status=1
 exit $status

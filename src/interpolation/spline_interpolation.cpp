@@ -45,6 +45,15 @@ Status check_vector(std::span<const double> value, int dimension, const std::str
 /// Checks the end derivatives of interpolate_bspline / interpolate_on_knots:
 /// orders in 1..p, no order twice at one end, values of the points'
 /// dimension and finite. Counts them per end.
+/// The degree range both B-spline interpolators accept.
+Status check_interpolation_degree(int p) {
+  if (p < 1 || p > tolerances::kMaxBSplineDegree) {
+    return Error{"degree " + std::to_string(p) + " is outside 1.." + std::to_string(tolerances::kMaxBSplineDegree) +
+                 " for B-spline interpolation"};
+  }
+  return {};
+}
+
 Status check_end_derivatives(std::span<const EndDerivative> derivatives, int p, int dimension, std::size_t& at_start,
                              std::size_t& at_end) {
   at_start = at_end = 0;
@@ -213,10 +222,7 @@ Expected<BSplineCurve> interpolate_cubic(const PointArray& points, std::span<con
 Expected<BSplineCurve> interpolate_bspline(const PointArray& points, std::span<const double> parameters, int degree,
                                            std::span<const EndDerivative> derivatives) {
   const int p = degree;
-  if (p < 1 || p > tolerances::kMaxBSplineDegree) {
-    return Error{"degree " + std::to_string(p) + " is outside 1.." + std::to_string(tolerances::kMaxBSplineDegree) +
-                 " for B-spline interpolation"};
-  }
+  if (auto ok = check_interpolation_degree(p); !ok) return ok.error();
   const std::size_t m1 = points.size();
   // Each end takes at most p - 1 derivatives: p of them would make the first
   // averaged interior knot equal t_0 (multiplicity p + 2).
@@ -264,10 +270,7 @@ Expected<BSplineCurve> interpolate_on_knots(const PointArray& points, std::span<
                                             std::vector<double> knots, std::span<const EndDerivative> derivatives) {
   using detail::number_text;
   const int p = degree;
-  if (p < 1 || p > tolerances::kMaxBSplineDegree) {
-    return Error{"degree " + std::to_string(p) + " is outside 1.." + std::to_string(tolerances::kMaxBSplineDegree) +
-                 " for B-spline interpolation"};
-  }
+  if (auto ok = check_interpolation_degree(p); !ok) return ok.error();
   const std::size_t m1 = points.size();
   std::size_t at_start = 0, at_end = 0;
   if (auto ok = check_end_derivatives(derivatives, p, points.dimension(), at_start, at_end); !ok) return ok.error();
