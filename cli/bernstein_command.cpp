@@ -20,11 +20,9 @@ struct BernsteinOptions {
 };
 
 int run_bernstein(const BernsteinOptions& options) {
-  const std::string& text = options.degree;
-  if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
-    return fail(fmt::format("N: '{}' is not a whole number >= 1", text.substr(0, 60)));
-  const int n = std::stoi(text);
-  auto figure = render::bernstein_basis_figure(n, options.without_ends);
+  const auto n = whole_number("N", options.degree, 1, render::kMaxPlottedBasisDegree);
+  if (!n) return fail(n.error());
+  auto figure = render::bernstein_basis_figure(static_cast<int>(*n), options.without_ends);
   if (!figure) return fail(figure.error());
   if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
   return 0;

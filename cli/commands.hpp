@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "casteljau/core/expected.hpp"
+#include "options.hpp"
 
 namespace casteljau::cli {
 
@@ -20,14 +20,5 @@ void add_convert_command(CLI::App& app, int& status);    // cli/convert_command.
 void add_interpolate_command(CLI::App& app, int& status);  // cli/interpolate_command.cpp
 void add_fit_command(CLI::App& app, int& status);          // cli/fit_command.cpp
 void add_tessellate_command(CLI::App& app, int& status);   // cli/tessellate_command.cpp
-
-/// Prints "casteljau: error: <message>" on stderr and returns 2 (bad input).
-int fail(std::string_view message);
-/// The same for an Error from the library.
-int fail(const Error& error);
-/// Writes a command's output: to `path` atomically (nothing is half-written;
-/// a file error is bad input, status 2) or, when `path` is empty, to standard
-/// output (a failure there is the environment's, status 1). 0 on success.
-int write_output(const std::string& path, std::string_view text);
 
 }  // namespace casteljau::cli

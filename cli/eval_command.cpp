@@ -6,10 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
-#include <charconv>
-#include <cstdio>
-#include <cstring>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -32,22 +28,6 @@ struct EvalOptions {
   std::string derivative = "0";
   std::string output;
 };
-
-/// A whole number in [0, limit] written in decimal digits (no sign, no
-/// exponent): "--samples: '1.5' is not a whole number".
-Expected<std::size_t> whole_number(const std::string& option, const std::string& text, std::size_t limit) {
-  std::size_t value = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  const bool digits_only = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-  if (!digits_only || ptr != end) {
-    return Error{fmt::format("{}: '{}' is not a whole number >= 0", option, text.substr(0, 60))};
-  }
-  if (ec == std::errc::result_out_of_range || value > limit) {
-    return Error{fmt::format("{}: {} is more than the limit of {}", option, text.substr(0, 60), limit)};
-  }
-  return value;
-}
 
 /// "the bezier model in 'm.json'" or "models[1] (piecewise_bezier) in 'm.json'".
 std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file) {
@@ -147,12 +127,6 @@ void evaluate_surface(const SurfaceView& view, const SurfaceRequest& request, st
   }
 }
 
-/// Writes the whole output to stdout; false (with errno) when it fails.
-bool write_stdout(const std::string& text) {
-  if (!text.empty() && std::fwrite(text.data(), 1, text.size(), stdout) != text.size()) return false;
-  return std::fflush(stdout) == 0;
-}
-
 int run_eval(const EvalOptions& options) {
   constexpr std::size_t kLimit = tolerances::kMaxEvaluationParameters;
 
@@ -160,10 +134,10 @@ int run_eval(const EvalOptions& options) {
   std::size_t samples = 0;
   const bool has_samples = !options.samples.empty();
   if (has_samples) {
-    auto n = whole_number("--samples", options.samples, kLimit);
+    auto n = whole_number("--samples", options.samples, 0, static_cast<long long>(kLimit));
     if (!n) return fail(n.error());
     if (*n == 0) return fail("--samples: 0 samples, give N >= 1 (N = 1 is the start of the domain)");
-    samples = *n;
+    samples = static_cast<std::size_t>(*n);
   }
   if (options.at.empty() && options.params.empty() && !has_samples) {
     return fail("nothing to evaluate: give --at T (u,v for a surface), --params FILE.csv or --samples N");
@@ -178,7 +152,7 @@ int run_eval(const EvalOptions& options) {
   // --- the options read as the models' kinds need them ----------------------
   // A curve takes T and K, a surface u,v and ku,kv; a file that mixes both
   // kinds can only be sampled (or differentiated with the default 0).
-  const auto max_order = static_cast<std::size_t>(tolerances::kMaxDerivativeOrder);
+  const long long max_order = tolerances::kMaxDerivativeOrder;
   CurveRequest curve;
   SurfaceRequest surface;
   if (any_curve) {
@@ -191,7 +165,7 @@ int run_eval(const EvalOptions& options) {
       }
       curve.at.push_back(*value);
     }
-    auto order = whole_number("--derivative", options.derivative, max_order);
+    auto order = whole_number("--derivative", options.derivative, 0, max_order);
     if (!order) return fail(order.error().message + (options.derivative.find(',') != std::string::npos
                                                           ? " (ku,kv is for surfaces; a curve takes one K)"
                                                           : ""));
@@ -218,13 +192,11 @@ int run_eval(const EvalOptions& options) {
                                 "e.g. 1,0 for dS/du",
                                 options.derivative.substr(0, 60)));
       }
-      auto ku = whole_number("--derivative", std::string(trimmed(std::string_view(options.derivative).substr(0, comma))),
-                             max_order);
+      auto ku = whole_number("--derivative", trimmed(std::string_view(options.derivative).substr(0, comma)), 0, max_order);
       if (!ku) return fail(ku.error());
-      auto kv = whole_number("--derivative",
-                             std::string(trimmed(std::string_view(options.derivative).substr(comma + 1))), max_order);
+      auto kv = whole_number("--derivative", trimmed(std::string_view(options.derivative).substr(comma + 1)), 0, max_order);
       if (!kv) return fail(kv.error());
-      if (*ku + *kv > static_cast<std::size_t>(tolerances::kMaxSurfaceDerivativeOrder)) {
+      if (*ku + *kv > tolerances::kMaxSurfaceDerivativeOrder) {
         return fail(fmt::format("--derivative {},{}: ku + kv = {} is more than the limit of {} for a surface", *ku, *kv,
                                 *ku + *kv, tolerances::kMaxSurfaceDerivativeOrder));
       }
@@ -336,17 +308,7 @@ int run_eval(const EvalOptions& options) {
     }
   }
 
-  // --- output --------------------------------------------------------------
-  if (!options.output.empty()) {
-    if (auto written = write_file_atomically(options.output, out); !written) return fail(written.error());
-    return 0;
-  }
-  if (!write_stdout(out)) {
-    // Not bad input: the environment failed (disk full, closed pipe).
-    std::fprintf(stderr, "casteljau: error: cannot write to standard output: %s\n", std::strerror(errno));
-    return 1;
-  }
-  return 0;
+  return write_output(options.output, out);
 }
 
 }  // namespace

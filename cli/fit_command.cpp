@@ -8,11 +8,8 @@
 // output is built in memory and written atomically.
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -41,23 +38,6 @@ struct FitOptions {
   CLI::Option *control_points_option = nullptr, *tolerance_option = nullptr, *smoothing_option = nullptr,
               *param_option = nullptr;
 };
-
-bool given(const CLI::Option* option) { return option != nullptr && option->count() > 0; }
-
-/// A whole number in [lowest, highest] written in decimal digits:
-/// "--degree: 'x' is not a whole number", "--control-points: 0 is outside 2..10000000".
-Expected<long long> whole_number(const char* option, const std::string& text, long long lowest, long long highest) {
-  long long value = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  const bool digits_only = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-  if (!digits_only || ptr != end || ec != std::errc{}) {
-    if (digits_only) return Error{fmt::format("{}: {} is more than the limit of {}", option, text.substr(0, 60), highest)};
-    return Error{fmt::format("{}: '{}' is not a whole number", option, text.substr(0, 60))};
-  }
-  if (value < lowest || value > highest) return Error{fmt::format("{}: {} is outside {}..{}", option, value, lowest, highest)};
-  return value;
-}
 
 /// A finite number (CSV rules: parse_number), with the option named in errors.
 Expected<double> number_option(const char* option, const std::string& text) {

@@ -8,10 +8,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
-#include <charconv>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -68,25 +65,6 @@ struct InterpolateOptions {
               *start_tangent_option = nullptr, *end_tangent_option = nullptr, *degree_option = nullptr,
               *nodes_option = nullptr, *order_option = nullptr;
 };
-
-bool given(const CLI::Option* option) { return option != nullptr && option->count() > 0; }
-
-/// A whole number in [lowest, highest] in decimal digits: "--degree: 'x' is
-/// not a whole number", "--order: 0 is outside 1..50".
-Expected<int> whole_number(const char* option, const std::string& text, int lowest, int highest) {
-  int value = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  const bool digits_only = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-  if (!digits_only || ptr != end || ec != std::errc{}) {
-    if (digits_only) return Error{fmt::format("{}: {} is more than the limit of {}", option, text.substr(0, 60), highest)};
-    return Error{fmt::format("{}: '{}' is not a whole number", option, text.substr(0, 60))};
-  }
-  if (value < lowest || value > highest) {
-    return Error{fmt::format("{}: {} is outside {}..{}", option, value, lowest, highest)};
-  }
-  return value;
-}
 
 /// A vector written "x,y[,z...]" with as many coordinates as `count` allows.
 Expected<Point> vector_option(const char* option, const std::string& text) {
@@ -249,7 +227,7 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
       if (given(options.degree_option)) {
         auto value = whole_number("--degree", options.degree, 1, tolerances::kMaxBSplineDegree);
         if (!value) return value.error();
-        degree = *value;
+        degree = static_cast<int>(*value);
       }
       std::vector<EndDerivative> derivatives;
       if (given(options.start_tangent_option)) {
@@ -308,7 +286,7 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
       if (given(options.order_option)) {
         auto value = whole_number("--order", options.order, 1, tolerances::kMaxNaturalSplineOrder);
         if (!value) return value.error();
-        order = *value;
+        order = static_cast<int>(*value);
       }
       auto parameters = parameters_of(points, options, kind);
       if (!parameters) return in_file(options, parameters.error());

@@ -1,38 +1,10 @@
 // casteljau: the command line. Parses arguments with CLI11 and dispatches to
 // the subcommands in cli/*_command.cpp. Exit status: 0 success, 2 bad input,
 // 1 internal failure (../ARCHITECTURE.md, docs/cli.md).
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <exception>
 #include <iostream>
 
-#include "casteljau/io/file.hpp"
 #include "commands.hpp"
-
-namespace casteljau::cli {
-
-int fail(std::string_view message) {
-  std::cerr << "casteljau: error: " << message << '\n';
-  return 2;
-}
-
-int fail(const Error& error) { return fail(error.message); }
-
-int write_output(const std::string& path, std::string_view text) {
-  if (!path.empty()) {
-    if (auto written = casteljau::write_file_atomically(path, text); !written) return fail(written.error());
-    return 0;
-  }
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
-    // Not bad input: the environment failed (disk full, closed pipe).
-    std::fprintf(stderr, "casteljau: error: cannot write to standard output: %s\n", std::strerror(errno));
-    return 1;
-  }
-  return 0;
-}
-
-}  // namespace casteljau::cli
 
 int main(int argc, char** argv) {
   using namespace casteljau::cli;

@@ -85,7 +85,7 @@ Expected<BSplineCurve> from_bezier_pieces(const BezierPieces& input) {
   rows.reserve(count * static_cast<std::size_t>(width));
   std::vector<double> knots;
   knots.reserve(count + static_cast<std::size_t>(p) + 1);
-  const double allowed_gap = tolerances::kJointRelativeGap * std::max(scale, 1e-300);
+  const double allowed_gap = tolerances::kJointRelativeGap * std::max(scale, tolerances::kScaleFloor);
   std::vector<double> previous_end(static_cast<std::size_t>(d));  // Cartesian end of the previous piece
   double previous_weight = 1.0;
   for (std::size_t i = 0; i < m; ++i) {

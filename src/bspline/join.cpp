@@ -50,7 +50,7 @@ Expected<JoinResult> join(const BSplineCurve& first_input, const BSplineCurve& s
   const auto end = a.control_points()[na - 1];
   const auto start = b.control_points()[0];
   const double gap = distance(end, start);
-  const double scale = std::max({scale_of(a.control_points()), scale_of(b.control_points()), 1e-300});
+  const double scale = std::max({scale_of(a.control_points()), scale_of(b.control_points()), tolerances::kScaleFloor});
   const double allowed = tolerances::kJointRelativeGap * scale;
   if (!(gap <= allowed))
     return Error{"the curves do not meet: the first ends at " + point_text(end) + ", the second starts at " +

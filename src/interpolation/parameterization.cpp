@@ -159,7 +159,7 @@ PointArray without_closing_duplicate(const PointArray& points) {
   const std::size_t count = points.size();
   if (count < 2) return points;
   const double gap = distance(points[0], points[count - 1]);
-  if (!(gap <= tolerances::kJointRelativeGap * std::max(scale_of(points), 1e-300))) return points;
+  if (!(gap <= tolerances::kJointRelativeGap * std::max(scale_of(points), tolerances::kScaleFloor))) return points;
   std::vector<double> kept(points.coordinates().begin(),
                            points.coordinates().end() - points.dimension());
   return PointArray::from_trusted(points.dimension(), std::move(kept));

@@ -41,6 +41,7 @@
 //    cells whose triangles miss are split and steps 4-6 repeat, so the check
 //    holds for the triangles actually written, neighbours' vertices included.
 #include "casteljau/ops/tessellate.hpp"
+#include "casteljau/core/tolerance.hpp"
 
 #include <algorithm>
 #include <array>
@@ -825,7 +826,7 @@ Expected<TriangleMesh> tessellate(std::span<const SurfaceView> patches, Toleranc
   }
   // Shared edges agree to rounding; at least a tiny absolute distance so that
   // surfaces at the origin (scale 0) still compare.
-  const double match_distance = std::max(tolerances::kMeshSharedEdgeRelative * scale, 1e-300);
+  const double match_distance = std::max(tolerances::kMeshSharedEdgeRelative * scale, tolerances::kScaleFloor);
   Tessellator tessellator(patches, e, match_distance);
   return tessellator.run();
 }

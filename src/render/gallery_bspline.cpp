@@ -4,6 +4,7 @@
 // weight. Every curve goes through to_bezier_pieces and the certified
 // flattening (bspline_plots.hpp), like the Bézier figures.
 #include "casteljau/render/gallery.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "figure_list.hpp"
 
 #include <fmt/format.h>
@@ -250,7 +251,7 @@ Expected<GalleryFigure> circle_figure() {
   const auto points = plane_points(circle->control_points());
   const auto weights = circle->weights();
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {  // the last point repeats the first
-    const Vec2 outward = points[i] * (1.0 / std::max(norm(points[i]), 1e-300));
+    const Vec2 outward = points[i] * (1.0 / std::max(norm(points[i]), tolerances::kScaleFloor));
     panel.texts.push_back({points[i], fmt::format("P{} w = {}", i, weight_text(weights[i])), colors::black,
                            9.0 * kPixelsPerPoint, outward[0] < -0.5 ? Anchor::end : (outward[0] > 0.5 ? Anchor::start : Anchor::middle),
                            Vec2{{9.0 * outward[0], 9.0 * outward[1] - (outward[1] < -0.5 ? 9.0 : 0.0)}}});

@@ -6,6 +6,7 @@
 // its Bézier pieces and the certified flattening, like the other figures;
 // the numbers in the captions are measured here at every run.
 #include "casteljau/render/gallery.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "figure_list.hpp"
 
 #include <fmt/format.h>
@@ -98,7 +99,7 @@ double seam_gap(const BSplineCurve& curve) {
       for (double c : value) size = std::max(size, std::abs(c));
     }
     worst = std::max(worst, distance(derivative_at(curve, domain.lower, k), derivative_at(curve, domain.upper, k)) /
-                                std::max(size, 1e-300));
+                                std::max(size, tolerances::kScaleFloor));
   }
   return worst;
 }
@@ -116,7 +117,7 @@ double largest_tangent_jump(const PiecewiseBezierCurve& curve, bool closed) {
     worst = std::max(worst, distance(left, right));
     for (double c : left) size = std::max(size, std::abs(c));
   }
-  return worst / std::max(size, 1e-300);
+  return worst / std::max(size, tolerances::kScaleFloor);
 }
 
 // --- head and car: c1-bezier at α = 1 and 2, the closed C² cubic -------------------

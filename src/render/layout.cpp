@@ -11,6 +11,7 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 #include "casteljau/render/layout.hpp"
+#include "casteljau/core/tolerance.hpp"
 
 #include <algorithm>
 #include <array>
@@ -149,9 +150,9 @@ std::array<double, 2> auto_range(double lower, double upper, bool logarithmic) {
   if (!(lower <= upper)) return logarithmic ? std::array<double, 2>{1.0, 10.0} : std::array<double, 2>{0.0, 1.0};
   if (logarithmic) lower = std::log10(lower), upper = std::log10(upper);
   double width = upper - lower;
-  if (width <= 1e-300 || width <= 1e-12 * std::max(std::abs(lower), std::abs(upper))) {
+  if (width <= tolerances::kScaleFloor || width <= 1e-12 * std::max(std::abs(lower), std::abs(upper))) {
     // A single value: a window around it (matplotlib's nonsingular expansion).
-    const double half = lower == 0.0 ? 0.5 : std::max(0.05 * std::abs(lower), 1e-300);
+    const double half = lower == 0.0 ? 0.5 : std::max(0.05 * std::abs(lower), tolerances::kScaleFloor);
     lower -= half, upper += half;
     width = upper - lower;
   }

@@ -62,7 +62,7 @@ Point cross(const Point& a, const Point& b) {
 double norm(const Point& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
 double patch_scale(const CoonsPatch& patch) {
-  double scale = 1e-300;
+  double scale = tolerances::kScaleFloor;
   for (const BSplineCurve* c : {&patch.u0(), &patch.u1(), &patch.v0(), &patch.v1()}) {
     scale = std::max(scale, scale_of(c->control_points()));
   }
@@ -89,7 +89,7 @@ Expected<CoonsPatch> CoonsPatch::make(BSplineCurve u0, BSplineCurve u1, BSplineC
     }
   }
   const Interval unit{0.0, 1.0};
-  double scale = 1e-300;
+  double scale = tolerances::kScaleFloor;
   for (BSplineCurve* curve : {&u0, &u1, &v0, &v1}) {
     if (curve->domain() != unit) *curve = *reparameterized(*curve, unit);  // a valid domain maps without error
     scale = std::max(scale, scale_of(curve->control_points()));

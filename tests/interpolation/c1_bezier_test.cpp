@@ -24,14 +24,9 @@
 namespace casteljau {
 namespace {
 
-std::filesystem::path examples_dir() {
-#ifdef CASTELJAU_EXAMPLES_DIR
-  return CASTELJAU_EXAMPLES_DIR;
-#else
-  // tests/interpolation/<this file> -> examples/
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "examples";
-#endif
-}
+// Set by tests/CMakeLists.txt (an absolute path: __FILE__ may be relative
+// to the build folder, e.g. under ccache's base_dir).
+std::filesystem::path examples_dir() { return CASTELJAU_EXAMPLES_DIR; }
 
 /// A decimal such as "-4.25" as the exact rational it denotes.
 mpq_class exact_decimal(const std::string& text) {

@@ -68,10 +68,17 @@ inline constexpr double kFlattenSmallestToleranceFactor = 10.0;
 inline constexpr double kOrthonormalAxes = 1e-12;
 
 
+/// The smallest scale a relative comparison divides by or multiplies with
+/// (max(scale, kScaleFloor)): data whose scale is 0 (every point at the
+/// origin, a zero derivative) then compares absolutely instead of dividing
+/// by zero. 1e-300 lies below any coordinate that matters and above the
+/// subnormal range, where a quotient by it would overflow. Unit: model units.
+inline constexpr double kScaleFloor = 1e-300;
+
 /// Largest gap allowed where two curves or Bézier pieces are joined end to
 /// start (join, from_bezier_pieces), relative to the larger of their scales
-/// (scale_of of the control points, at least 1e-300 so that curves at the
-/// origin compare absolutely). Pieces produced by casteljau (decomposition,
+/// (scale_of of the control points, at least kScaleFloor so that curves at
+/// the origin compare absolutely). Pieces produced by casteljau (decomposition,
 /// splitting) meet to a few ulps, about 1e-15 relative; 1e-9 accepts data
 /// rounded to 9 significant digits (files, other programs) and refuses any
 /// visible gap. Unit: fraction of the scale.
