@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the io tests: a private temporary folder, file writing,
-// arbitrary finite doubles (every bit pattern, not a grid), bitwise equality.
+// arbitrary finite doubles (every bit pattern, not a grid), bitwise equality,
+// and the message of a make() that refuses (what a reader must pass on).
 
 #include <rapidcheck.h>
 #include <stdlib.h>
@@ -13,6 +14,8 @@
 #include <iterator>
 #include <stdexcept>
 #include <string>
+
+#include "casteljau/core/expected.hpp"
 
 namespace casteljau::test {
 
@@ -64,6 +67,15 @@ inline rc::Gen<double> any_finite_double() {
   const auto plain = rc::gen::map(rc::gen::inRange(-100000, 100001), [](int i) { return i / 64.0; });
   return rc::gen::oneOf(from_bits, plain,
                         rc::gen::element(0.0, -0.0, 0.1, 1e-320, 1.7976931348623157e308, -2.2250738585072014e-308));
+}
+
+/// The message with which `made` (a make() given bad values) refuses them;
+/// "accepted" if it did not refuse, which no expectation contains. The
+/// readers add only a location to it, so tests compare against it rather
+/// than against words that belong to make().
+template <class T>
+std::string refusal(const Expected<T>& made) {
+  return made ? std::string("accepted") : made.error().message;
 }
 
 }  // namespace casteljau::test
