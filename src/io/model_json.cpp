@@ -19,8 +19,8 @@ namespace io_detail {
 Expected<Model> read_model(JsonReader& reader, const json& value, const std::string& path) {
   if (!value.is_object()) return reader.at(path, "expected a model object, found " + describe(value));
   if (!value.contains("type")) {
-    return reader.at(path,
-                     "missing field 'type' (bezier, piecewise_bezier, bspline, bezier_surface, bspline_surface, coons)");
+    return reader.at(
+        path, "missing field 'type' (bezier, piecewise_bezier, bspline, bezier_surface, bspline_surface, coons)");
   }
   const json& type = value["type"];
   if (!type.is_string()) return reader.at(member(path, "type"), "expected a string, found " + describe(type));
@@ -45,8 +45,7 @@ namespace {
 /// The whole document: one model object, or {"models": [MODEL, ...]}.
 Expected<std::vector<Model>> read_document(JsonReader& reader, const json& root) {
   if (!root.is_object()) {
-    return reader.at("", "expected an object (one model, or {\"models\": [...]} for several), found " +
-                             describe(root));
+    return reader.at("", "expected an object (one model, or {\"models\": [...]} for several), found " + describe(root));
   }
   if (!root.contains("models")) {
     reader.start_model();
@@ -56,8 +55,8 @@ Expected<std::vector<Model>> read_document(JsonReader& reader, const json& root)
   }
   for (const auto& [name, value] : root.items()) {
     if (name != "models") {
-      return reader.at("", "unknown field " + in_quotes(name) +
-                               " (a file of several models has only the field 'models')");
+      return reader.at("",
+                       "unknown field " + in_quotes(name) + " (a file of several models has only the field 'models')");
     }
   }
   const json& models = root["models"];

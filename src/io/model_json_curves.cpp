@@ -10,10 +10,11 @@
 namespace casteljau::io_detail {
 
 Expected<BezierCurve> read_bezier(JsonReader& reader, const json& value, const std::string& path) {
-  if (auto ok = reader.known_fields(value, path, {"type", "control_points", "weights"}, "a bezier model"); !ok) {
+  if (auto ok =
+          reader.known_fields(value, path, {"type", "control_points", "weights"}, "a bezier model", {"control_points"});
+      !ok) {
     return ok.error();
   }
-  if (auto ok = reader.required_fields(value, path, {"control_points"}); !ok) return ok.error();
   auto points = reader.points(value["control_points"], member(path, "control_points"));
   if (!points) return points.error();
   auto weights = reader.weights(value, path);
@@ -37,8 +38,8 @@ Expected<BezierCurve> read_piece(JsonReader& reader, const json& piece, const st
     return read_bezier(reader, piece, path);
   }
   if (!piece.is_array()) {
-    return reader.at(path, "expected a piece (an array of control points, or a bezier model object), found " +
-                               describe(piece));
+    return reader.at(
+        path, "expected a piece (an array of control points, or a bezier model object), found " + describe(piece));
   }
   auto points = reader.points(piece, path);
   if (!points) return points.error();
@@ -50,10 +51,9 @@ Expected<BezierCurve> read_piece(JsonReader& reader, const json& piece, const st
 }  // namespace
 
 Expected<Model> read_piecewise_bezier(JsonReader& reader, const json& value, const std::string& path) {
-  if (auto ok = reader.known_fields(value, path, {"type", "pieces"}, "a piecewise_bezier model"); !ok) {
+  if (auto ok = reader.known_fields(value, path, {"type", "pieces"}, "a piecewise_bezier model", {"pieces"}); !ok) {
     return ok.error();
   }
-  if (auto ok = reader.required_fields(value, path, {"pieces"}); !ok) return ok.error();
   const std::string pieces_path = member(path, "pieces");
   const json& list = value["pieces"];
   if (!list.is_array()) return reader.at(pieces_path, "expected an array of pieces, found " + describe(list));
@@ -71,11 +71,10 @@ Expected<Model> read_piecewise_bezier(JsonReader& reader, const json& value, con
 
 Expected<Model> read_bspline(JsonReader& reader, const json& value, const std::string& path) {
   if (auto ok = reader.known_fields(value, path, {"type", "degree", "knots", "control_points", "weights"},
-                                    "a bspline model");
+                                    "a bspline model", {"degree", "knots", "control_points"});
       !ok) {
     return ok.error();
   }
-  if (auto ok = reader.required_fields(value, path, {"degree", "knots", "control_points"}); !ok) return ok.error();
   auto degree = reader.whole_number(value["degree"], member(path, "degree"));
   if (!degree) return degree.error();
   auto points = reader.points(value["control_points"], member(path, "control_points"));

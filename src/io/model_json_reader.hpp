@@ -85,13 +85,12 @@ class JsonReader {
   /// again (the boundaries of a coons patch share the patch's).
   void start_model() { budget_ = tolerances::kMaxControlPoints; }
 
-  /// Refuses a member of `object` that is not in `fields`; `kind` names the
-  /// object in the message ("a bspline model").
+  /// Refuses a member of `object` that is not in `fields` ("unknown field
+  /// 'colour' (a bezier model has the fields type, control_points,
+  /// weights)"; `kind` names the object), then one of `required` that is
+  /// missing ("missing field 'knots'").
   Status known_fields(const json& object, const std::string& path, std::initializer_list<std::string_view> fields,
-                      const char* kind) const;
-  /// Refuses an `object` that lacks one of `fields`: "missing field 'knots'".
-  Status required_fields(const json& object, const std::string& path,
-                         std::initializer_list<std::string_view> fields) const;
+                      const char* kind, std::initializer_list<std::string_view> required = {}) const;
 
   /// A JSON number (finite: the parser refuses overflow).
   Expected<double> number(const json& value, const std::string& path) const;

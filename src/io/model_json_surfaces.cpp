@@ -16,11 +16,11 @@
 namespace casteljau::io_detail {
 
 Expected<Model> read_bezier_surface(JsonReader& reader, const json& value, const std::string& path) {
-  if (auto ok = reader.known_fields(value, path, {"type", "control_points", "weights"}, "a bezier_surface model");
+  if (auto ok = reader.known_fields(value, path, {"type", "control_points", "weights"}, "a bezier_surface model",
+                                    {"control_points"});
       !ok) {
     return ok.error();
   }
-  if (auto ok = reader.required_fields(value, path, {"control_points"}); !ok) return ok.error();
   auto net = reader.net(value["control_points"], member(path, "control_points"));
   if (!net) return net.error();
   auto weights = reader.net_weights(value, path, *net);
@@ -32,11 +32,10 @@ Expected<Model> read_bezier_surface(JsonReader& reader, const json& value, const
 
 Expected<Model> read_bspline_surface(JsonReader& reader, const json& value, const std::string& path) {
   if (auto ok = reader.known_fields(value, path, {"type", "degree", "knots", "control_points", "weights"},
-                                    "a bspline_surface model");
+                                    "a bspline_surface model", {"degree", "knots", "control_points"});
       !ok) {
     return ok.error();
   }
-  if (auto ok = reader.required_fields(value, path, {"degree", "knots", "control_points"}); !ok) return ok.error();
   const std::string degree_path = member(path, "degree");
   const json& degrees = value["degree"];
   if (auto ok = reader.pair(degrees, degree_path, "[p, q], the degrees in u and in v"); !ok) return ok.error();
@@ -88,9 +87,10 @@ Expected<Model> read_coons(JsonReader& reader, const json& value, const std::str
   const std::string boundaries_path = member(path, "boundaries");
   const json& boundaries = value["boundaries"];
   if (!boundaries.is_object()) {
-    return reader.at(boundaries_path, "expected an object {\"u0\": curve, \"u1\": curve, \"v0\": curve, \"v1\": "
-                                      "curve}, found " +
-                                          describe(boundaries));
+    return reader.at(boundaries_path,
+                     "expected an object {\"u0\": curve, \"u1\": curve, \"v0\": curve, \"v1\": "
+                     "curve}, found " +
+                         describe(boundaries));
   }
   if (auto ok = reader.known_fields(boundaries, boundaries_path, {"u0", "u1", "v0", "v1"},
                                     "the boundaries object of a coons model");
@@ -115,8 +115,8 @@ Expected<Model> read_coons(JsonReader& reader, const json& value, const std::str
     if (!spline) return reader.at(curve_path, spline.error().message);
     curves.push_back(std::get<BSplineCurve>(std::move(*spline)));
   }
-  auto patch = CoonsPatch::make(std::move(curves[0]), std::move(curves[1]), std::move(curves[2]),
-                                std::move(curves[3]), blending);
+  auto patch = CoonsPatch::make(std::move(curves[0]), std::move(curves[1]), std::move(curves[2]), std::move(curves[3]),
+                                blending);
   if (!patch) return reader.at(boundaries_path, patch.error().message);  // names the boundaries and the corner
   return Model{std::move(*patch)};
 }

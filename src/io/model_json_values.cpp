@@ -59,9 +59,12 @@ struct Subject {
 
 // Singular stems: "knot" finds "knots", "weight" "weights", "control"
 // "control points" / "control net" / "control polygon".
-constexpr Subject kSubjects[] = {{"knot", "knots"},           {"weight", "weights"},
-                                 {"degree", "degree"},        {"coordinate", "control_points"},
-                                 {"control", "control_points"}, {"piece", "pieces"}};
+constexpr Subject kSubjects[] = {{"knot", "knots"},
+                                 {"weight", "weights"},
+                                 {"degree", "degree"},
+                                 {"coordinate", "control_points"},
+                                 {"control", "control_points"},
+                                 {"piece", "pieces"}};
 
 /// A surface's make() names the direction of its pairs: "knots_u: <what>"
 /// (a prefix, dropped since the path says it) and "degree_v 3 is ...".
@@ -112,19 +115,15 @@ Error JsonReader::refused(const std::string& path, const Error& error, std::init
 }
 
 Status JsonReader::known_fields(const json& object, const std::string& path,
-                                std::initializer_list<std::string_view> fields, const char* kind) const {
+                                std::initializer_list<std::string_view> fields, const char* kind,
+                                std::initializer_list<std::string_view> required) const {
   for (const auto& [name, value] : object.items()) {
     if (has_field(fields, name)) continue;
     std::string list;
     for (const auto field : fields) list += (list.empty() ? "" : ", ") + std::string(field);
     return at(path, "unknown field " + in_quotes(name) + " (" + kind + " has the fields " + list + ")");
   }
-  return {};
-}
-
-Status JsonReader::required_fields(const json& object, const std::string& path,
-                                   std::initializer_list<std::string_view> fields) const {
-  for (const auto field : fields) {
+  for (const auto field : required) {
     if (!object.contains(field)) return at(path, fmt::format("missing field '{}'", field));
   }
   return {};
@@ -161,9 +160,9 @@ Expected<int> JsonReader::whole_number(const json& value, const std::string& pat
 
 Status JsonReader::pair(const json& value, const std::string& path, const char* expected) const {
   if (value.is_array() && value.size() == 2) return {};
-  return at(path, fmt::format("expected {}, found {}", expected,
-                              value.is_array() ? fmt::format("an array of {} elements", value.size())
-                                               : describe(value)));
+  return at(path,
+            fmt::format("expected {}, found {}", expected,
+                        value.is_array() ? fmt::format("an array of {} elements", value.size()) : describe(value)));
 }
 
 Expected<PointArray> JsonReader::points(const json& value, const std::string& path) {
@@ -235,8 +234,7 @@ Expected<ControlNet> JsonReader::net(const json& value, const std::string& path)
   return net;
 }
 
-Expected<KnotsRead> JsonReader::knots(const json& value, const std::string& path, int degree,
-                                      std::size_t count) const {
+Expected<KnotsRead> JsonReader::knots(const json& value, const std::string& path, int degree, std::size_t count) const {
   auto values = numbers(value, path);
   if (!values) return values.error();
   KnotsRead knots{std::move(*values), {}};
@@ -249,9 +247,10 @@ Expected<KnotsRead> JsonReader::knots(const json& value, const std::string& path
     knots.values = std::move(*converted);
     knots.note = " (read in the Rhino/openNURBS convention)";
   } else if (knots.values.size() != full) {
-    knots.note = fmt::format("; model JSON also reads {} knots (control points + degree - 1, the Rhino/openNURBS "
-                             "convention)",
-                             rhino);
+    knots.note = fmt::format(
+        "; model JSON also reads {} knots (control points + degree - 1, the Rhino/openNURBS "
+        "convention)",
+        rhino);
   }
   return knots;
 }
@@ -269,19 +268,19 @@ Expected<std::vector<double>> JsonReader::net_weights(const json& model, const s
   const json& rows = model["weights"];
   if (!rows.is_array()) return at(weights_path, "expected an array of rows of numbers, found " + describe(rows));
   if (rows.size() != net.rows()) {
-    return at(weights_path, fmt::format("{} row{} of weights for a control net of {} row{}, expected one weight per "
-                                        "control point",
-                                        rows.size(), rows.size() == 1 ? "" : "s", net.rows(),
-                                        net.rows() == 1 ? "" : "s"));
+    return at(weights_path,
+              fmt::format("{} row{} of weights for a control net of {} row{}, expected one weight per "
+                          "control point",
+                          rows.size(), rows.size() == 1 ? "" : "s", net.rows(), net.rows() == 1 ? "" : "s"));
   }
   weights.reserve(net.rows() * net.columns());
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::string row_path = element(weights_path, i);
     if (!rows[i].is_array()) return at(row_path, "expected a row (an array of numbers), found " + describe(rows[i]));
     if (rows[i].size() != net.columns()) {
-      return at(row_path, fmt::format("row {} has {} weight{}, the control net has {} point{} per row", i,
-                                      rows[i].size(), rows[i].size() == 1 ? "" : "s", net.columns(),
-                                      net.columns() == 1 ? "" : "s"));
+      return at(row_path,
+                fmt::format("row {} has {} weight{}, the control net has {} point{} per row", i, rows[i].size(),
+                            rows[i].size() == 1 ? "" : "s", net.columns(), net.columns() == 1 ? "" : "s"));
     }
     auto row = numbers(rows[i], row_path);
     if (!row) return row.error();

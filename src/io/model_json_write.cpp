@@ -65,39 +65,32 @@ void write_bspline(fmt::memory_buffer& out, const BSplineCurve& curve) {
   out.push_back('}');
 }
 
-/// control_points[i][j] of a net, row by row.
-void write_net(fmt::memory_buffer& out, const ControlNet& net) {
-  out.push_back('[');
+/// "control_points": [[P_00, P_01, ...], ...] of a net, row by row, and,
+/// for a rational surface, "weights" in the same shape.
+void write_net(fmt::memory_buffer& out, const ControlNet& net, std::span<const double> weights) {
+  fmt::format_to(std::back_inserter(out), "\"control_points\":[");
   for (std::size_t i = 0; i < net.rows(); ++i) {
     if (i > 0) out.push_back(',');
     out.push_back('[');
     for (std::size_t j = 0; j < net.columns(); ++j) {
       if (j > 0) out.push_back(',');
-      const auto point = net(i, j);
-      write_numbers(out, point);
+      write_numbers(out, net(i, j));
     }
     out.push_back(']');
   }
   out.push_back(']');
-}
-
-/// weights[i][j] from the row-by-row weights of a net.
-void write_net_weights(fmt::memory_buffer& out, std::span<const double> weights, std::size_t columns) {
-  out.push_back('[');
-  for (std::size_t i = 0; i * columns < weights.size(); ++i) {
+  if (weights.empty()) return;
+  fmt::format_to(std::back_inserter(out), ",\"weights\":[");
+  for (std::size_t i = 0; i < net.rows(); ++i) {
     if (i > 0) out.push_back(',');
-    write_numbers(out, weights.subspan(i * columns, columns));
+    write_numbers(out, weights.subspan(i * net.columns(), net.columns()));
   }
   out.push_back(']');
 }
 
 void write_bezier_surface(fmt::memory_buffer& out, const BezierSurface& surface) {
-  fmt::format_to(std::back_inserter(out), "{{\"type\":\"bezier_surface\",\"control_points\":");
-  write_net(out, surface.control_net());
-  if (surface.is_rational()) {
-    fmt::format_to(std::back_inserter(out), ",\"weights\":");
-    write_net_weights(out, surface.weights(), surface.control_net().columns());
-  }
+  fmt::format_to(std::back_inserter(out), "{{\"type\":\"bezier_surface\",");
+  write_net(out, surface.control_net(), surface.weights());
   out.push_back('}');
 }
 
@@ -108,12 +101,8 @@ void write_bspline_surface(fmt::memory_buffer& out, const BSplineSurface& surfac
   write_numbers(out, surface.knots_u());
   out.push_back(',');
   write_numbers(out, surface.knots_v());
-  fmt::format_to(std::back_inserter(out), "],\"control_points\":");
-  write_net(out, surface.control_net());
-  if (surface.is_rational()) {
-    fmt::format_to(std::back_inserter(out), ",\"weights\":");
-    write_net_weights(out, surface.weights(), surface.control_net().columns());
-  }
+  fmt::format_to(std::back_inserter(out), "],");
+  write_net(out, surface.control_net(), surface.weights());
   out.push_back('}');
 }
 

@@ -272,8 +272,8 @@ TEST(ModelJsonSurface, RefusesWeightsThatDoNotMatchTheNet) {
             "m.json, weights: " + test::refusal(BezierSurface::make(two_by_three, {1, 1, 1, 1, 0, 1})));
   EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
                      points + R"(, "weights": [[1,1,1],[1,1,-2]]})"),
-            "m.json, weights: " + test::refusal(BSplineSurface::make(1, 1, {0, 0, 1, 1}, {0, 0, 0.5, 1, 1}, two_by_three,
-                                                                      {1, 1, 1, 1, 1, -2})));
+            "m.json, weights: " + test::refusal(BSplineSurface::make(1, 1, {0, 0, 1, 1}, {0, 0, 0.5, 1, 1},
+                                                                      two_by_three, {1, 1, 1, 1, 1, -2})));
 }
 
 TEST(ModelJsonSurface, RefusesUnknownFields) {

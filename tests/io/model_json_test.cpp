@@ -231,8 +231,10 @@ rc::Gen<std::string> model_text() {
       R"({"models": [{"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,1,1]],
                       "control_points": [[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]]}]})",
       R"({"type": "coons", "blending": "cubic", "boundaries": {
-            "u0": {"type": "bezier", "control_points": [[0,0],[0,1]]}, "u1": {"type": "bezier", "control_points": [[1,0],[1,1]]},
-            "v0": {"type": "bezier", "control_points": [[0,0],[1,0]]}, "v1": {"type": "bezier", "control_points": [[0,1],[1,1]]}}})");
+            "u0": {"type": "bezier", "control_points": [[0,0],[0,1]]},
+            "u1": {"type": "bezier", "control_points": [[1,0],[1,1]]},
+            "v0": {"type": "bezier", "control_points": [[0,0],[1,0]]},
+            "v1": {"type": "bezier", "control_points": [[0,1],[1,1]]}}})");
 }
 
 RC_GTEST_PROP(ModelJson, EveryRefusalNamesTheFileOnOneLine, ()) {
