@@ -132,24 +132,24 @@ struct TableContext {
 };
 
 Error field_error(const TableContext& table, std::size_t line, std::size_t index, std::string_view text) {
-  const std::string where_ = where(table.source, line, index);
+  const std::string location = where(table.source, line, index);
   if (read_field(text).kind == FieldKind::decimal_comma) {
     return Error{fmt::format("{}: {} uses ',' as the decimal mark; casteljau reads '.' as the decimal mark, and ',', "
                              "';' or tabs between values (convert with: sed 's/,/./g')",
-                             where_, in_quotes(text))};
+                             location, in_quotes(text))};
   }
   if (const char other = other_separator(text, table.separator); other != 0 && other != ',') {
     return Error{fmt::format("{}: {} is not a number; values are separated by {} on line {}, and this line has {} "
                              "(one separator for the whole file: ',', ';' or tabs)",
-                             where_, in_quotes(text), separator_name(table.separator), table.first_row_line,
+                             location, in_quotes(text), separator_name(table.separator), table.first_row_line,
                              separator_name(other))};
   }
   if (is_blank_separated(text)) {
     return Error{fmt::format("{}: {} holds numbers separated by spaces; casteljau reads ',', ';' or tabs between "
                              "values (convert with: sed -E 's/ +/,/g')",
-                             where_, in_quotes(text))};
+                             location, in_quotes(text))};
   }
-  return Error{where_ + ": " + parse_number(text).error().message};
+  return Error{location + ": " + parse_number(text).error().message};
 }
 
 /// The shared reader behind points and number columns. `what` names the rows
@@ -181,12 +181,17 @@ Expected<Table> parse_table(std::string_view text, const std::string& source, st
     const auto count = static_cast<std::size_t>(std::count(content.begin(), content.end(), separator)) + 1;
     if (!first_row && count != table.width) {
       // A row without the file's separator but with another one was
-      // written with another separator: say so.
+      // written with another separator: say so. In a file of one column,
+      // "0,5" is a decimal comma.
       const char other = count == 1 ? other_separator(content, separator) : 0;
-      const std::string hint = other == 0 ? std::string()
-                                          : fmt::format("; line {} separates values by {}, this line has {}",
-                                                        first_row_line, separator_name(separator),
-                                                        separator_name(other));
+      std::string hint;
+      if (other != 0) {
+        hint = fmt::format("; line {} separates values by {}, this line has {}", first_row_line,
+                           separator_name(separator), separator_name(other));
+      } else if (table.width == 1 && read_field(content).kind == FieldKind::decimal_comma) {
+        hint = fmt::format("; {} uses ',' as the decimal mark, casteljau reads '.' (convert with: sed 's/,/./g')",
+                           in_quotes(content));
+      }
       return Error{fmt::format("{}: {} field{}, but {} line {} has {} (every row must have the same number of "
                                "fields){}",
                                where(source, line), count, count == 1 ? "" : "s",

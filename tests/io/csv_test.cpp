@@ -242,6 +242,9 @@ TEST(NumbersCsv, RefusesSeveralColumnsTooManyValuesAndBadFields) {
             "t.csv, line 2, field 1: 'half' is not a number");
   EXPECT_EQ(parse_numbers_csv("# none\n", "t.csv", 10).error().message,
             "t.csv: no values (only comments and blank lines)");
+  EXPECT_EQ(parse_numbers_csv("t\n0\n0,5\n", "t.csv", 10).error().message,
+            "t.csv, line 3: 2 fields, but the header on line 1 has 1 (every row must have the same number of fields); "
+            "'0,5' uses ',' as the decimal mark, casteljau reads '.' (convert with: sed 's/,/./g')");
 }
 
 TEST(PointsCsvFiles, ReadTheExamplesAndNameTheFileInErrors) {
