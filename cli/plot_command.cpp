@@ -15,6 +15,7 @@
 #include "casteljau/render/surface_plots.hpp"
 #include "casteljau/render/write.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 
 namespace casteljau::cli {
 namespace {
@@ -80,6 +81,17 @@ Expected<render::PlotSource> read_source(const std::string& path, const CsvStyle
                            path, extension.empty() ? "no extension" : extension)};
 }
 
+/// Writes the figure, with a progress line while its curves are flattened
+/// (erased before any message).
+int write_plot(const render::Figure& figure, const std::string& path) {
+  Status written;
+  {
+    TerminalProgress progress("plot");
+    written = render::write_figure(figure, path, progress.callback());
+  }
+  return written ? 0 : fail(written.error());
+}
+
 int run_plot(const PlotCommandOptions& options) {
   render::PlotOptions plot;
   plot.bezier.control_polygon = options.control_polygon;
@@ -136,13 +148,11 @@ int run_plot(const PlotCommandOptions& options) {
     }
     auto figure = render::surface_plot_figure(sources, surface, extension != ".svg");
     if (!figure) return fail(figure.error());
-    if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
-    return 0;
+    return write_plot(*figure, options.output);
   }
   auto figure = render::plot_figure(sources, plot);
   if (!figure) return fail(figure.error());
-  if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
-  return 0;
+  return write_plot(*figure, options.output);
 }
 
 }  // namespace

@@ -25,6 +25,7 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/render/bernstein_graph.hpp"
+#include "progress_part.hpp"
 
 namespace casteljau::render {
 namespace {
@@ -201,12 +202,17 @@ struct PanelLines {
   std::vector<std::vector<Vec2>> graphs;  ///< one per BernsteinGraphItem
 };
 
+using detail::ProgressPart;
+
 /// Every curve and graph of the panel flattened within `tolerance` (model
 /// units); on a logarithmic axis within each one's own fallback instead.
-Expected<PanelLines> flatten_lines(const Panel& panel, double tolerance) {
+/// `done` hears the fraction of them flattened.
+Expected<PanelLines> flatten_lines(const Panel& panel, double tolerance, ProgressPart& done) {
   const bool logarithmic = panel.x.logarithmic || panel.y.logarithmic;
+  const double count = static_cast<double>(panel.curves.size() + panel.bernstein_graphs.size());
   PanelLines lines;
   for (std::size_t i = 0; i < panel.curves.size(); ++i) {
+    done(static_cast<double>(i) / count);
     std::vector<Vec2> points;
     for (const auto& piece : panel.curves[i].pieces) {
       auto line = flatten(piece, Tolerance{logarithmic ? log_axis_tolerance(piece) : tolerance});
@@ -221,11 +227,13 @@ Expected<PanelLines> flatten_lines(const Panel& panel, double tolerance) {
     lines.curves.push_back(std::move(points));
   }
   for (std::size_t i = 0; i < panel.bernstein_graphs.size(); ++i) {
+    done(static_cast<double>(panel.curves.size() + i) / count);
     const auto& g = panel.bernstein_graphs[i];
     auto points = bernstein_graph_polyline(g.degree, g.index, Tolerance{logarithmic ? kLogAxisGraphTolerance : tolerance});
     if (!points) return with_context(points.error(), fmt::format("Bernstein graph {}", i));
     lines.graphs.push_back(std::move(*points));
   }
+  done(1.0);
   return lines;
 }
 
@@ -362,7 +370,7 @@ Status check_drawable(const PanelFrame& f) {
 /// flattened again when tau turns out coarser than the fitted frame needs (a
 /// guess from the control boxes), or kFinerThanNeeded times finer (samples
 /// that missed most of a curve: a denser polyline than needed).
-Expected<ResolvedPanel> resolve_panel(const Panel& panel, const Rectangle& cell, bool title_here) {
+Expected<ResolvedPanel> resolve_panel(const Panel& panel, const Rectangle& cell, bool title_here, ProgressPart& done) {
   const bool xl = panel.x.logarithmic, yl = panel.y.logarithmic;
   const Bounds items = item_bounds(panel);
   auto fitted = [&](const PanelLines& lines, double widen) {
@@ -373,7 +381,7 @@ Expected<ResolvedPanel> resolve_panel(const Panel& panel, const Rectangle& cell,
   if (xl || yl || (panel.curves.empty() && panel.bernstein_graphs.empty())) {
     // No uniform pixel scale (or nothing to flatten): each curve within its
     // own fallback tolerance, the frame fitted to the vertices.
-    auto lines = flatten_lines(panel, 0.0);
+    auto lines = flatten_lines(panel, 0.0, done);
     if (!lines) return lines.error();
     const PanelFrame frame = fitted(*lines, 0.0);
     if (auto ok = check_drawable(frame); !ok) return ok.error();
@@ -388,7 +396,7 @@ Expected<ResolvedPanel> resolve_panel(const Panel& panel, const Rectangle& cell,
   double tolerance = needed_by(guess);
   bool from_hull = false;
   for (int round = 1;; ++round) {
-    auto lines = flatten_lines(panel, tolerance);
+    auto lines = flatten_lines(panel, tolerance, done);
     if (!lines) {
       // The samples can miss most of a curve (a narrow spike), making the
       // guessed tolerance far too fine: start again from the control boxes,
@@ -413,7 +421,7 @@ Expected<ResolvedPanel> resolve_panel(const Panel& panel, const Rectangle& cell,
       needed = drawing_tolerance(frame, 0.0).distance;
     }
     if (tolerance <= needed || round == kExtentRounds) {
-      auto final_lines = flatten_lines(panel, needed);
+      auto final_lines = flatten_lines(panel, needed, done);
       if (!final_lines) return final_lines.error();
       return ResolvedPanel{frame, std::move(*final_lines)};
     }
@@ -818,13 +826,22 @@ double estimated_text_width(const std::string& text, double size) {
 
 namespace {
 
-/// Every panel of the figure resolved (checked first).
-Expected<std::vector<ResolvedPanel>> resolve_panels(const Figure& figure) {
+/// Every panel of the figure resolved (checked first). Progress: each panel's
+/// share is its part of the figure's curves and graphs (flattening is the work).
+Expected<std::vector<ResolvedPanel>> resolve_panels(const Figure& figure, Progress progress) {
   if (auto ok = check_figure(figure); !ok) return ok.error();
   const auto cells = panel_cells(figure);
+  double total = 0.0;
+  for (const auto& panel : figure.panels) total += static_cast<double>(panel.curves.size() + panel.bernstein_graphs.size());
   std::vector<ResolvedPanel> panels;
+  double begin = 0.0;
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
-    auto resolved = resolve_panel(figure.panels[i], cells[i], !panel_title(figure, i).empty());
+    const auto& panel = figure.panels[i];
+    const double share = total > 0.0 ? static_cast<double>(panel.curves.size() + panel.bernstein_graphs.size()) / total : 0.0;
+    const double end = i + 1 == figure.panels.size() ? 1.0 : begin + share;
+    ProgressPart done(progress, begin, end);
+    begin = end;
+    auto resolved = resolve_panel(panel, cells[i], !panel_title(figure, i).empty(), done);
     if (!resolved && figure.panels.size() == 1) return resolved.error();  // the curve's own name says enough
     if (!resolved) return with_context(resolved.error(), fmt::format("panel {}", i));
     panels.push_back(std::move(*resolved));
@@ -835,15 +852,15 @@ Expected<std::vector<ResolvedPanel>> resolve_panels(const Figure& figure) {
 }  // namespace
 
 Expected<std::vector<PanelFrame>> panel_frames(const Figure& figure) {
-  auto panels = resolve_panels(figure);
+  auto panels = resolve_panels(figure, Progress{});
   if (!panels) return panels.error();
   std::vector<PanelFrame> frames;
   for (const auto& panel : *panels) frames.push_back(panel.frame);
   return frames;
 }
 
-Expected<Scene> layout(const Figure& figure) {
-  auto panels = resolve_panels(figure);
+Expected<Scene> layout(const Figure& figure, Progress progress) {
+  auto panels = resolve_panels(figure, progress);
   if (!panels) return panels.error();
   Scene scene;
   scene.width = figure.width;

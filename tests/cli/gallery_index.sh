@@ -43,6 +43,30 @@ done
 # No temporary files left behind.
 check "no temporary files" '[ -z "$(find "$work/gallery" -name ".*tmp*")" ]'
 
+# Progress: stderr above is a pipe, so it stayed empty. CASTELJAU_PROGRESS=always
+# forces the line "casteljau gallery: N %" there, once the work has run for a
+# second (cli/progress.hpp): then stderr holds that line, rewritten in place,
+# and nothing else; the same stdout line.
+start=$(date +%s%N)
+CASTELJAU_PROGRESS=always "$casteljau" gallery "$work/gallery_progress" --examples "$examples" >"$work/stdout_p" 2>"$work/stderr_p"
+elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+check "gallery with progress: the same stdout" '[ "$(sed "s/gallery_progress/gallery/" "$work/stdout_p")" = "$(cat "$work/stdout")" ]'
+check "gallery with progress: stderr holds only progress lines" \
+  '! tr "\r" "\n" <"$work/stderr_p" | sed "s/\x1b\[K//g" | grep -v "^$" | grep -qvE "^casteljau gallery: [0-9]+ %$"'
+if [ "$elapsed_ms" -ge 1500 ]; then
+  check "gallery with progress ($elapsed_ms ms): a 'casteljau gallery: N %' line" \
+    'tr "\r" "\n" <"$work/stderr_p" | grep -qE "casteljau gallery: [0-9]+ %"'
+else
+  echo "note: the gallery took $elapsed_ms ms, under the second before a progress line shows"
+fi
+
+# gallery --help lists every section of the gallery, not only its Bézier figures
+# (read with line breaks and indents squeezed: help is wrapped to the terminal).
+"$casteljau" gallery --help >"$work/help"
+for section in "01-16 Bézier curves" "17-22 B-splines and NURBS" "23-29 interpolation" "30-34 surfaces"; do
+  check "gallery --help lists '$section'" 'tr -s " \n" "  " <"$work/help" | grep -qF "$section"'
+done
+
 # A folder that cannot be created: exit 2, one line, nothing written.
 touch "$work/file"
 set +e
@@ -61,6 +85,6 @@ check "missing examples exits 2 (got $status)" '[ "$status" -eq 2 ]'
 check "missing examples: one line naming notebook_polygon.csv" '[ "$(wc -l <"$work/err3")" -eq 1 ] && grep -q "notebook_polygon.csv" "$work/err3"'
 check "missing examples: no gallery files" '[ -z "$(ls -A "$work/g2" 2>/dev/null)" ]'
 
-checks=$((count + 5 * $(ls "$work"/gallery/*.svg | wc -l) + 16))
+checks=$((count + 5 * $(ls "$work"/gallery/*.svg | wc -l) + 23))
 echo "$((checks - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -48,6 +48,16 @@ expect_error "surface too wide, named" "surface.json: " plot "$work/surface.json
 
 # --- figures that finish, or refuse at once ------------------------------------------
 check "the Bernstein basis of degree 1000" "" bernstein 1000 -o "$work/b.svg"
+# With CASTELJAU_PROGRESS=always its progress line shows once it has run a second.
+start=$(date +%s%N)
+CASTELJAU_PROGRESS=always "$casteljau" bernstein 1000 -o "$work/b.svg" 2>"$work/progress"
+elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+if ! tr '\r' '\n' <"$work/progress" | sed 's/\x1b\[K//g' | grep -v '^$' | grep -qvE '^casteljau bernstein: [0-9]+ %$'; then :; else
+  echo "FAIL: bernstein's stderr holds more than its progress line"; failures=$((failures + 1))
+fi
+if [[ $elapsed_ms -ge 1500 ]] && ! grep -qE 'casteljau bernstein: [0-9]+ %' "$work/progress"; then
+  echo "FAIL: bernstein 1000 ran $elapsed_ms ms without a progress line"; failures=$((failures + 1))
+fi
 awk 'BEGIN { print "x,y"; srand(7); for (i = 0; i <= 10000; i++) printf "%.6f,%.6f\n", rand(), rand() }' >"$work/high.csv"
 expect_error "degree 10000 refused" "high.csv: a curve of degree 10000 is beyond what a figure draws" \
   plot "$work/high.csv" -o "$work/x.svg"

@@ -140,6 +140,29 @@ RC_GTEST_PROP(Layout, CurveExtentHoldsEverySampledPointAndLittleMore, ()) {
   RC_ASSERT(f.y_upper >= y1 + 0.05 * (y1 - y0) - py && f.y_upper <= y1 + 0.05 * (y1 - y0) + py);
 }
 
+TEST(Layout, ProgressRisesToOneOverEveryPanelsCurves) {
+  // Three panels (the second with Bernstein graphs, the third with nothing to
+  // flatten): the fractions never fall and end at 1, and a layout with no
+  // Progress draws the same scene.
+  Figure figure;
+  figure.columns = 3;
+  Panel curves;
+  for (int i = 0; i < 5; ++i)
+    curves.curves.push_back({{BezierCurve::make(*PointArray::make({{0, 0}, {1, 2.0 + i}, {3, 0}})).value()}, solid(colors::black), ""});
+  figure.panels.push_back(curves);
+  figure.panels.push_back(bernstein_basis_panel(10).value());
+  figure.panels.push_back(points_figure({Vec2{{0, 0}}, Vec2{{1, 1}}}, false).panels[0]);
+  std::vector<double> seen;
+  const Progress progress{[](void* self, double f) { static_cast<std::vector<double>*>(self)->push_back(f); }, &seen};
+  const auto scene = layout(figure, progress);
+  ASSERT_TRUE(scene);
+  ASSERT_GE(seen.size(), 16u);
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]) << i;
+  EXPECT_EQ(scene->shapes.size(), layout(figure)->shapes.size());
+}
+
 TEST(Layout, FixedAndLogarithmicRanges) {
   Figure figure = points_figure({Vec2{{0.5, 1e-12}}, Vec2{{2.0, 1e-3}}, Vec2{{3.0, 0.0}}}, false);
   figure.panels[0].x.range = std::array<double, 2>{0.0, 4.0};

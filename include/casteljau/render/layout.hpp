@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "casteljau/core/expected.hpp"
+#include "casteljau/core/progress.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/render/figure.hpp"
 
@@ -137,9 +138,13 @@ struct Scene {
   std::vector<Shape> shapes;
 };
 
-/// Lays the figure out. Errors: no panel, a size outside 16..16384 pixels,
-/// columns < 1, a non-finite coordinate, a fixed range that is empty or (on a
-/// log axis) not positive, a curve that cannot be flattened.
-Expected<Scene> layout(const Figure& figure);
+/// Lays the figure out. `progress` hears the fraction of its curves and
+/// Bernstein graphs flattened (the work of a big figure). Errors: no panel, a
+/// size outside 16..16384 pixels, columns < 1, a non-finite coordinate, a
+/// fixed range that is empty or (on a log axis) not positive, data wider
+/// than a double can measure, a curve piece of degree beyond
+/// kMaxPlottedCurveDegree, a curve that cannot be flattened (named by its
+/// CurveItem::source).
+Expected<Scene> layout(const Figure& figure, Progress progress = {});
 
 }  // namespace casteljau::render
