@@ -43,12 +43,14 @@ void add_curvature_comb(Panel& panel, const BezierCurve& plane, double length, i
                         Color color = colors::gray);
 
 /// The graph t -> B_{n,k}(t) on [0,1] as a Bézier curve: control points
-/// (j/n, delta_jk), exact by linear precision, so the basis is drawn by the
-/// same certified flattening as every other curve. n >= 1, 0 <= k <= n.
+/// (j/n, delta_jk), exact by linear precision. n >= 1, 0 <= k <= n. Figures
+/// of the basis draw BernsteinGraphItems instead (the closed form, O(n) per
+/// vertex), since this curve costs O(n^2) per evaluation, O(n^3) for the basis.
 BezierCurve bernstein_graph(int n, int k);
 
 /// A panel with B_{n,k} for k = 0..n (or k = 1..n-1 with `without_ends`),
-/// black like the notebook's plot_bernstein. Errors: n < 1, n beyond
+/// black like the notebook's plot_bernstein, as BernsteinGraphItems (drawn
+/// from their closed form, bernstein_graph.hpp). Errors: n < 1, n beyond
 /// kMaxPlottedBasisDegree, `without_ends` with n < 2 (nothing left to draw).
 Expected<Panel> bernstein_basis_panel(int n, bool without_ends = false);
 
