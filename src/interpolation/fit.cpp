@@ -25,6 +25,7 @@
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
 #include "../core/number_text.hpp"
+#include "collocation.hpp"
 #include "fit_banded.hpp"
 #include "input_checks.hpp"
 
@@ -89,67 +90,38 @@ std::vector<double> clamped_knots(std::span<const double> parameters, int degree
   return knots;
 }
 
-/// N_i(t) != 0 for a clamped knot vector of degree p >= 1: the open support
-/// (U_i, U_{i+p+1}), plus t_0 for N_0 and t_m for N_n (where they are 1).
-bool left_of_support(std::span<const double> knots, std::size_t i, double t) {
-  return !(i == 0 && t == knots.front()) && t <= knots[i];
-}
-bool right_of_support(std::span<const double> knots, int degree, std::size_t i, double t) {
-  const std::size_t n = knots.size() - static_cast<std::size_t>(degree) - 2;
-  return !(i == n && t == knots.back()) && t >= knots[i + static_cast<std::size_t>(degree) + 1];
+/// The fit's rows and free columns: interpolated ends fix Q_0 = P_0 and
+/// Q_n = P_m and leave the columns 1..n−1 and the rows 1..m−1 (The NURBS
+/// Book eq. 9.63–9.67); free ends leave all of them.
+struct FreePart {
+  std::size_t first_row = 0, end_row = 0;
+  std::vector<std::size_t> columns;
+};
+FreePart free_part(std::size_t knot_count, int degree, std::size_t point_count, FitEnds ends) {
+  const std::size_t n = knot_count - static_cast<std::size_t>(degree) - 2;
+  const bool clamp = ends == FitEnds::interpolated;
+  FreePart part;
+  part.first_row = clamp ? 1 : 0;
+  part.end_row = clamp ? point_count - 1 : point_count;
+  if (clamp && n < 2) return part;  // Q_0 and Q_n fixed, nothing free
+  for (std::size_t j = clamp ? 1 : 0; j <= (clamp ? n - 1 : n); ++j) part.columns.push_back(j);
+  return part;
 }
 
-/// The Schoenberg–Whitney condition of the fit's free columns and rows:
-/// increasing rows k_j with N_j(t_{k_j}) != 0 for every free column j
-/// (then BᵀB is positive definite; Schoenberg & Whitney 1953, de Boor, A
-/// Practical Guide to Splines, ch. XIII). The supports' ends increase with
-/// j, so taking the first usable row for each column in turn finds such
-/// rows whenever they exist. O(m + n).
-bool schoenberg_whitney(std::span<const double> knots, int degree, std::span<const double> parameters,
-                        FitEnds ends) {
-  const std::size_t n = knots.size() - static_cast<std::size_t>(degree) - 2;
-  const bool clamp = ends == FitEnds::interpolated;
-  if (clamp && n < 2) return true;  // Q_0 and Q_n fixed, nothing free
-  const std::size_t first = clamp ? 1 : 0, last = clamp ? n - 1 : n;  // free columns [first, last]
-  std::size_t row = clamp ? 1 : 0;
-  const std::size_t end_row = clamp ? parameters.size() - 1 : parameters.size();
-  for (std::size_t j = first; j <= last; ++j) {
-    while (row < end_row && left_of_support(knots, j, parameters[row])) ++row;
-    if (row >= end_row || right_of_support(knots, degree, j, parameters[row])) return false;
-    ++row;
+/// The Schoenberg–Whitney condition of a fit's free columns and rows
+/// (detail::schoenberg_whitney_gap), as the error naming the basis function
+/// left without a point; then BᵀB is singular.
+Status check_schoenberg_whitney(std::span<const double> knots, int degree, std::span<const double> parameters,
+                                std::span<const double> weights, FitEnds ends) {
+  const FreePart part = free_part(knots.size(), degree, parameters.size(), ends);
+  const std::size_t rows = part.end_row - part.first_row;
+  const std::span<const double> sites = parameters.subspan(part.first_row, rows);
+  const std::span<const double> row_weights = weights.empty() ? weights : weights.subspan(part.first_row, rows);
+  if (const auto gap = detail::schoenberg_whitney_gap(knots, degree, part.columns, sites, row_weights)) {
+    return detail::schoenberg_whitney_error(knots, degree, sites, *gap, part.first_row, !weights.empty(),
+                                            "the fit's normal equations are singular");
   }
-  return true;
-}
-
-/// The first free basis function that the Schoenberg–Whitney condition
-/// leaves without a point, for any valid knots (clamped or not): greedily,
-/// each free column j in turn takes the first remaining row of positive
-/// weight where N_j is non-zero (basis_function: the end of the domain closed
-/// as the evaluation does). The supports move right with j, so the greedy
-/// choice finds increasing rows whenever they exist. Nothing when every
-/// column gets a row. O(m p²).
-std::optional<std::size_t> uncovered_column(std::span<const double> knots, int degree,
-                                            std::span<const double> parameters, std::span<const double> weights,
-                                            FitEnds ends) {
-  const std::size_t n = knots.size() - static_cast<std::size_t>(degree) - 2;
-  const bool clamp = ends == FitEnds::interpolated;
-  if (clamp && n < 2) return std::nullopt;
-  const std::size_t first = clamp ? 1 : 0, last = clamp ? n - 1 : n;
-  std::size_t row = clamp ? 1 : 0;
-  const std::size_t end_row = clamp ? parameters.size() - 1 : parameters.size();
-  for (std::size_t j = first; j <= last; ++j) {
-    const double support_end = knots[j + static_cast<std::size_t>(degree) + 1];
-    for (;; ++row) {
-      if (row >= end_row) return j;
-      const bool weighted = weights.empty() || weights[row] > 0.0;
-      if (weighted && basis_function(knots, degree, static_cast<int>(j), parameters[row]) != 0.0) break;
-      // Past the support (N_j vanishes from here on): no later row helps.
-      if (parameters[row] >= support_end && basis_function(knots, degree, static_cast<int>(j), parameters[row]) == 0.0)
-        return j;
-    }
-    ++row;
-  }
-  return std::nullopt;
+  return {};
 }
 
 // --- Gauss–Legendre ------------------------------------------------------------------
@@ -574,12 +546,7 @@ Expected<BSplineFit> fit_least_squares_on_knots(const PointArray& points, std::s
                    std::to_string(width) + " copies each)"};
     }
   }
-  if (const auto column = uncovered_column(knots, degree, parameters, weights, ends)) {
-    const std::size_t j = *column;
-    return Error{"no point of positive weight is left for basis function " + std::to_string(j) + " (support [" +
-                 number_text(knots[j]) + ", " + number_text(knots[j + width]) + ")): the knots and parameters " +
-                 "violate the Schoenberg–Whitney condition, the fit's normal equations are singular"};
-  }
+  if (auto ok = check_schoenberg_whitney(knots, degree, parameters, weights, ends); !ok) return ok.error();
   const FitSystem system(points, parameters, degree, std::move(knots), ends, false, weights);
   auto solution = system.solve(0.0, false);
   if (!solution) return singular_error(count, 0.0);
@@ -743,11 +710,11 @@ Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const 
     std::vector<double> next;
     if (!unique.empty()) {
       next = with_knots(unique);
-      if (!schoenberg_whitney(clamped_knots(parameters, degree, next), degree, parameters, ends)) {
+      if (!check_schoenberg_whitney(clamped_knots(parameters, degree, next), degree, parameters, {}, ends)) {
         next.clear();
         for (const Candidate& candidate : unique) {  // one knot at a time, worst first
           std::vector<double> single = with_knots(std::span<const Candidate>(&candidate, 1));
-          if (schoenberg_whitney(clamped_knots(parameters, degree, single), degree, parameters, ends)) {
+          if (check_schoenberg_whitney(clamped_knots(parameters, degree, single), degree, parameters, {}, ends)) {
             next = std::move(single);
             break;
           }
