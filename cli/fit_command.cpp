@@ -145,6 +145,12 @@ int run_fit(const FitOptions& options) {
   if (!request) return fail(request.error());
   auto points = read_points_csv(options.points);
   if (!points) return fail(points.error());
+  // One column would give a curve on a line, never what a point set means
+  // (with --function the library says what a function y(x) needs).
+  if (points->dimension() < 2 && !options.function) {
+    return fail(fmt::format("{}: fit approximates points of 2 or more columns (x,y or x,y,z), got 1 column",
+                            display_name(options.points)));
+  }
   auto fit = compute_fit(*request, options, *points);
   if (!fit) return fail(fit.error());
   const std::string text = models_to_json({Model{fit->curve}});
@@ -169,7 +175,7 @@ void add_fit_command(CLI::App& app, int& status) {
       "make_smoothing_spline). The curve runs over [t_0, t_m] (the parameters, normalized to [0, 1] unless "
       "--function). A summary line (control points, max and rms error, lambda, GCV score, effective degrees of "
       "freedom) goes to standard output with -o, else to standard error.");
-  command->add_option("POINTS", options->points, "CSV point set (x,y or x,y,z, any dimension)")->required();
+  command->add_option("POINTS", options->points, "CSV point set of 2 or more columns (x,y or x,y,z)")->required();
   command->add_option("--degree", options->degree, "The degree p >= 1 (2 or more with --smoothing)")
       ->type_name("P")
       ->required();

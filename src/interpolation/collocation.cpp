@@ -67,8 +67,7 @@ Status check_interpolation_input(const PointArray& points, std::span<const doubl
                                  std::size_t needed_points, const std::string& method) {
   const std::size_t m = points.size();
   if (m < needed_points) {
-    return Error{std::to_string(m) + (m == 1 ? " point, " : " points, ") + method + " needs at least " +
-                 std::to_string(needed_points)};
+    return Error{method + " needs at least " + std::to_string(needed_points) + " points, got " + std::to_string(m)};
   }
   if (parameters.size() != count) {
     return Error{std::to_string(parameters.size()) + " parameter values for " + std::to_string(m) + " points, " +

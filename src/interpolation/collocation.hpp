@@ -34,7 +34,8 @@ struct EndConstraint {
 /// Checks what every interpolation method needs of its input: `count`
 /// parameters, all finite and strictly increasing, and finite coordinates.
 /// `needed_points` and `method` word the error for too few points:
-/// "3 points, not-a-knot cubic interpolation needs at least 4".
+/// "cubic interpolation with not-a-knot ends needs at least 4 points, got 3"
+/// (the wording of every interpolation method's point count).
 Status check_interpolation_input(const PointArray& points, std::span<const double> parameters,
                                  std::size_t count, std::size_t needed_points, const std::string& method);
 

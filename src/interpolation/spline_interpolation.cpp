@@ -237,8 +237,11 @@ Expected<BSplineCurve> interpolate_bspline(const PointArray& points, std::span<c
   // 2 points are then enough), which an unsigned subtraction would wrap.
   const auto needed = static_cast<std::size_t>(
       std::max<long long>(2, static_cast<long long>(p) + 1 - static_cast<long long>(derivatives.size())));
-  const std::string method = "degree-" + std::to_string(p) + " interpolation with " +
-                             std::to_string(derivatives.size()) + " end derivatives";
+  const std::string method =
+      "degree-" + std::to_string(p) + " B-spline interpolation" +
+      (derivatives.empty() ? std::string()
+                           : " with " + std::to_string(derivatives.size()) + " end derivative" +
+                                 (derivatives.size() == 1 ? "" : "s"));
   if (auto ok = detail::check_interpolation_input(points, parameters, m1, needed, method); !ok) return ok.error();
 
   // Sites with t_0 repeated once per start derivative and t_m once per end
