@@ -15,6 +15,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
@@ -266,9 +267,12 @@ class FitSystem {
 
   /// λ₀ = tr G / tr Ω over the free columns: where data and penalty weigh alike.
   double smoothing_scale() const noexcept {
-    const double g = gram_.trace(), omega = free_penalty_.trace();
+    const double g = data_trace(), omega = penalty_trace();
     return g > 0.0 && omega > 0.0 ? g / omega : 1.0;
   }
+  /// tr G = tr(BᵀB) and tr Ω over the free columns.
+  double data_trace() const noexcept { return gram_.trace(); }
+  double penalty_trace() const noexcept { return free_penalty_.trace(); }
 
   /// The fit at λ (0: plain least squares); nothing when the normal
   /// equations are singular. `with_trace`: also tr H by the band of the
@@ -412,6 +416,42 @@ Error singular_error(std::size_t control_points, double lambda) {
                         " control points";
   if (lambda > 0.0) message += " and λ = " + number_text(lambda);
   return Error{message + ": the data do not determine the control points"};
+}
+
+/// A number to three significant digits, for the approximate values of a hint.
+std::string rounded_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+/// Why a smoothing fit with a given λ is singular, and which λ would do.
+/// The system G + λΩ loses G in rounding once λ tr Ω outweighs tr G by about
+/// 1 / tolerances::kFitSingularPivot (Ω alone is singular on straight lines
+/// with free ends); below λ₀ the data alone must determine the control
+/// points, which more control points than points (knots at every parameter)
+/// do not. The useful range is the one GCV searches: from λ₀ 10^-10 (all but
+/// interpolating) to λ₀ 10^6 (a straight line), λ₀ = tr G / tr Ω.
+Error smoothing_singular_error(const FitSystem& system, double lambda, std::size_t point_count) {
+  const double scale = system.smoothing_scale();
+  // log10(λ tr Ω / tr G) without forming the product, which overflows for λ near 1e308.
+  const double decades = std::log10(lambda) + std::log10(system.penalty_trace()) - std::log10(system.data_trace());
+  const std::string power = "10^" + std::to_string(static_cast<long>(std::lround(decades)));
+  std::string message = "the smoothing λ = " + number_text(lambda);
+  if (lambda >= scale) {
+    message += " is too large for these data: λ·tr(Ω) outweighs tr(BᵀB) by about " + power +
+               ", the data are lost in rounding and";
+  } else {
+    message += " is too small for these data: λ·tr(Ω) is about " + power + " of tr(BᵀB), too little to determine " +
+               std::to_string(system.control_point_count()) + " control points from " + std::to_string(point_count) +
+               " points:";
+  }
+  return Error{message + " the fit's normal equations are singular; λ from about " +
+               rounded_text(scale * std::pow(10.0, -tolerances::kGcvSearchDecadesBelow)) + " (nearly interpolating) to " +
+               rounded_text(scale * std::pow(10.0, tolerances::kGcvSearchDecadesAbove)) + " (a straight line) is " +
+               "meaningful here (λ₀·10^-" + rounded_text(tolerances::kGcvSearchDecadesBelow) + " to λ₀·10^" +
+               rounded_text(tolerances::kGcvSearchDecadesAbove) + ", λ₀ = tr(BᵀB)/tr(Ω) = " + rounded_text(scale) +
+               "), or let GCV choose λ"};
 }
 
 // --- GCV search ----------------------------------------------------------------------
@@ -594,7 +634,10 @@ Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const dou
     from_gcv = true;
   }
   auto solution = system.solve(lambda, true);
-  if (!solution) return singular_error(count, lambda);
+  if (!solution) {
+    if (!from_gcv) return smoothing_singular_error(system, lambda, points.size());
+    return singular_error(count, lambda);
+  }
   BSplineFit fit = make_result(system, std::move(*solution), points, parameters, degree, lambda);
   fit.smoothing_from_gcv = from_gcv;
   return fit;
