@@ -24,6 +24,7 @@
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 
 namespace casteljau::cli {
 namespace {
@@ -112,15 +113,19 @@ Expected<BSplineFit> compute_fit(const FitRequest& request, const FitOptions& op
   auto parameters = options.function ? function_parameters(points) : parameter_values(points, request.kind);
   if (!parameters) return in_file(options, parameters.error());
   Expected<BSplineFit> fit = Error{};
+  // GCV over 10⁶ points or a tolerance near the noise takes seconds: say how far
+  // it is (on a terminal's stderr, erased before anything else is printed).
+  TerminalProgress progress("fit");
   if (request.smoothing) {
     SmoothingOptions smoothing;
     smoothing.degree = request.degree;
     smoothing.control_point_count = request.control_points;
     smoothing.smoothing = request.lambda;
     smoothing.ends = request.ends;
-    fit = fit_smoothing(points, *parameters, smoothing);
+    fit = fit_smoothing(points, *parameters, smoothing, progress.callback());
   } else if (request.tolerance) {
-    fit = fit_to_tolerance(points, *parameters, request.degree, Tolerance{*request.tolerance}, request.ends);
+    fit = fit_to_tolerance(points, *parameters, request.degree, Tolerance{*request.tolerance}, request.ends,
+                           progress.callback());
   } else {
     fit = fit_least_squares(points, *parameters, request.degree, request.control_points, request.ends);
   }

@@ -195,6 +195,19 @@ struct Solution {
   double trace = 0.0;         ///< tr H
 };
 
+/// What GCV needs of one λ: the residual and tr H, without the curve.
+struct Score {
+  double residual_sum = 0.0;
+  double trace = 0.0;
+};
+
+/// The storage of one solve, kept across the λ of a GCV search: for 10⁶
+/// points each solve would otherwise allocate (and page in) some 50 MB.
+struct SolveBuffers {
+  SymmetricBand matrix{0, 1};
+  std::vector<double> rhs;
+};
+
 /// The least-squares / smoothing problem on fixed knots (see the file comment).
 /// Interpolated ends fix Q_0 = P_0 and Q_n = P_m, leave the free columns
 /// 1..n−1 and the rows 1..m−1 with P̃_k = P_k − N_0(t_k) P_0 − N_n(t_k) P_m
@@ -278,38 +291,52 @@ class FitSystem {
   /// equations are singular. `with_trace`: also tr H by the band of the
   /// inverse (for λ = 0 it is the number of control points exactly).
   std::optional<Solution> solve(double lambda, bool with_trace) const {
+    SolveBuffers buffers;
+    const auto score = solve_into(lambda, with_trace, buffers);
+    if (!score) return std::nullopt;
     const auto d = static_cast<std::size_t>(points_.dimension());
-    SymmetricBand matrix = gram_;
-    std::vector<double> rhs = right_side_;
-    if (lambda > 0.0) {
-      matrix.add_scaled(free_penalty_, lambda);
-      for (std::size_t k = 0; k < coupling_.size(); ++k) rhs[k] -= lambda * coupling_[k];
-    }
-    if (!matrix.factor()) return std::nullopt;
-    matrix.solve(rhs, d);
-
-    Solution solution;
     std::vector<double> all(count_ * d);
     if (clamp_) {
       std::copy(points_[0].begin(), points_[0].end(), all.begin());
       std::copy(points_[points_.size() - 1].begin(), points_[points_.size() - 1].end(),
                 all.begin() + static_cast<std::ptrdiff_t>((count_ - 1) * d));
     }
-    std::copy(rhs.begin(), rhs.end(), all.begin() + static_cast<std::ptrdiff_t>(first_column_ * d));
-    solution.control_points = PointArray::from_trusted(points_.dimension(), std::move(all));
-    solution.residual_sum = residual_sum(solution.control_points);
-    const std::size_t fixed = count_ - free_count_;
-    if (lambda == 0.0) {
-      solution.trace = static_cast<double>(count_);
-    } else if (with_trace) {
-      solution.trace = static_cast<double>(fixed) + matrix.inverse_band().trace_of_product(gram_);
-    } else {
-      solution.trace = kNotANumber;
-    }
-    return solution;
+    std::copy(buffers.rhs.begin(), buffers.rhs.end(), all.begin() + static_cast<std::ptrdiff_t>(first_column_ * d));
+    return Solution{PointArray::from_trusted(points_.dimension(), std::move(all)), score->residual_sum, score->trace};
   }
 
+  /// The residual and tr H at λ > 0 for GCV, in `buffers` (reused from one
+  /// λ to the next); nothing when the normal equations are singular.
+  std::optional<Score> score(double lambda, SolveBuffers& buffers) const { return solve_into(lambda, true, buffers); }
+
  private:
+  /// Factors G + λΩ and solves for the free control points into buffers.rhs.
+  std::optional<Score> solve_into(double lambda, bool with_trace, SolveBuffers& buffers) const {
+    const auto d = static_cast<std::size_t>(points_.dimension());
+    buffers.rhs.assign(right_side_.begin(), right_side_.end());
+    bool factored = false;
+    if (lambda > 0.0) {
+      for (std::size_t k = 0; k < coupling_.size(); ++k) buffers.rhs[k] -= lambda * coupling_[k];
+      factored = buffers.matrix.factor_sum(gram_, free_penalty_, lambda);
+    } else {
+      buffers.matrix = gram_;
+      factored = buffers.matrix.factor();
+    }
+    if (!factored) return std::nullopt;
+    buffers.matrix.solve(buffers.rhs, d);
+    Score score;
+    score.residual_sum = residual_sum(buffers.rhs);
+    const std::size_t fixed = count_ - free_count_;
+    if (lambda == 0.0) {
+      score.trace = static_cast<double>(count_);
+    } else if (with_trace) {
+      score.trace = static_cast<double>(fixed) + buffers.matrix.trace_of_inverse_times(gram_);
+    } else {
+      score.trace = kNotANumber;
+    }
+    return score;
+  }
+
   /// Adds row `row` of the design to G and Bᵀ P̃ (free columns only).
   void accumulate_row(std::size_t row) {
     const auto p = static_cast<std::size_t>(degree_);
@@ -336,24 +363,24 @@ class FitSystem {
   /// The weight of design row `row` (1 without weights).
   double weight_of(std::size_t row) const noexcept { return weights_.empty() ? 1.0 : weights_[row + first_row_]; }
 
-  /// Σ_k w_k ‖P̃_k − Σ_free N_j(t_k) Q_j‖² (rows 0 and m of interpolated ends are exact).
-  double residual_sum(const PointArray& control_points) const {
+  /// Σ_k w_k ‖P̃_k − Σ_free N_j(t_k) Q_j‖² for the free control points Q
+  /// (free_count rows of d values; rows 0 and m of interpolated ends are exact).
+  double residual_sum(std::span<const double> free) const {
     const auto p = static_cast<std::size_t>(degree_);
     const auto d = static_cast<std::size_t>(points_.dimension());
     double sum = 0.0;
-    std::vector<double> fitted(d);
     for (std::size_t row = 0; row < spans_.size(); ++row) {
       const double* values = basis_.data() + row * (p + 1);
-      std::fill(fitted.begin(), fitted.end(), 0.0);
       const std::size_t column0 = spans_[row] - p;
-      for (std::size_t r = 0; r <= p; ++r) {
-        const std::size_t a = column0 + r;
-        if (a < first_column_ || a >= first_column_ + free_count_) continue;
-        for (std::size_t c = 0; c < d; ++c) fitted[c] += values[r] * control_points[a][c];
-      }
+      // The free columns of the row's p+1 (interpolated ends drop the first and last).
+      const std::size_t first = std::max(column0, first_column_);
+      const std::size_t end = std::min(column0 + p + 1, first_column_ + free_count_);
+      const double weight = weight_of(row);
       for (std::size_t c = 0; c < d; ++c) {
-        const double r = targets_[row * d + c] - fitted[c];
-        sum += weight_of(row) * r * r;
+        double fitted = 0.0;  // in a register: Σ_r N_r(t) Q_r, coordinate c
+        for (std::size_t a = first; a < end; ++a) fitted += values[a - column0] * free[(a - first_column_) * d + c];
+        const double r = targets_[row * d + c] - fitted;
+        sum += weight * r * r;
       }
     }
     return sum;
@@ -456,10 +483,39 @@ Error smoothing_singular_error(const FitSystem& system, double lambda, std::size
 
 // --- GCV search ----------------------------------------------------------------------
 
+/// The number of steps of the GCV grid over log10 λ.
+int grid_steps() {
+  return static_cast<int>(
+      std::lround((tolerances::kGcvSearchDecadesAbove + tolerances::kGcvSearchDecadesBelow) / tolerances::kGcvGridStepDecades));
+}
+
+/// One GCV search's evaluations, reported as the fraction of those it makes
+/// at most: the grid, the golden section on a bracket of two grid steps
+/// (kGcvRefinementDecades wide at the end) and the final solve.
+class GcvProgress {
+ public:
+  GcvProgress(Progress progress, int grid_points) : progress_(progress) {
+    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+    const double golden = std::ceil(std::log(tolerances::kGcvRefinementDecades /
+                                             (2.0 * tolerances::kGcvGridStepDecades)) / std::log(ratio));
+    total_ = static_cast<double>(grid_points) + 2.0 + std::max(golden, 0.0) + 1.0;
+  }
+  void step() {
+    done_ += 1.0;
+    progress_(std::min(done_ / total_, 1.0));
+  }
+
+ private:
+  Progress progress_;
+  double done_ = 0.0, total_ = 1.0;
+};
+
 /// GCV at λ = λ₀ 10^x, +∞ where the system is singular, GCV undefined, or
 /// the fit (nearly) interpolates.
-double gcv_at(const FitSystem& system, double scale, double x, std::size_t point_count) {
-  const auto solution = system.solve(scale * std::pow(10.0, x), true);
+double gcv_at(const FitSystem& system, double scale, double x, std::size_t point_count, SolveBuffers& buffers,
+              GcvProgress& progress) {
+  const auto solution = system.score(scale * std::pow(10.0, x), buffers);
+  progress.step();
   if (!solution) return std::numeric_limits<double>::infinity();
   if (static_cast<double>(point_count) - solution->trace < tolerances::kGcvNearInterpolation)
     return std::numeric_limits<double>::infinity();  // (near) interpolation: GCV is rounding noise there
@@ -470,15 +526,17 @@ double gcv_at(const FitSystem& system, double scale, double x, std::size_t point
 /// The λ minimizing GCV: the best point of a grid over log10 λ, then
 /// golden-section search in the bracket of its two neighbours. Nothing when
 /// GCV is undefined at every grid point.
-std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_count) {
+std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_count, GcvProgress& progress) {
   const double scale = system.smoothing_scale();
   const double step = tolerances::kGcvGridStepDecades;
   const double low = -tolerances::kGcvSearchDecadesBelow;
-  const int steps = static_cast<int>(std::lround((tolerances::kGcvSearchDecadesAbove + tolerances::kGcvSearchDecadesBelow) / step));
+  const int steps = grid_steps();
+  SolveBuffers buffers;
+  const auto at = [&](double x) { return gcv_at(system, scale, x, point_count, buffers, progress); };
   double best_x = 0.0, best = std::numeric_limits<double>::infinity();
   for (int i = 0; i <= steps; ++i) {
     const double x = low + i * step;
-    const double score = gcv_at(system, scale, x, point_count);
+    const double score = at(x);
     if (score < best) {
       best = score;
       best_x = x;
@@ -491,20 +549,20 @@ std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_c
   const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   double a = std::max(best_x - step, low), b = std::min(best_x + step, tolerances::kGcvSearchDecadesAbove);
   double c = b - ratio * (b - a), e = a + ratio * (b - a);
-  double fc = gcv_at(system, scale, c, point_count), fe = gcv_at(system, scale, e, point_count);
+  double fc = at(c), fe = at(e);
   while (b - a > tolerances::kGcvRefinementDecades) {
     if (fc <= fe) {
       b = e;
       e = c;
       fe = fc;
       c = b - ratio * (b - a);
-      fc = gcv_at(system, scale, c, point_count);
+      fc = at(c);
     } else {
       a = c;
       c = e;
       fc = fe;
       e = a + ratio * (b - a);
-      fe = gcv_at(system, scale, e, point_count);
+      fe = at(e);
     }
   }
   double x = best_x;
@@ -594,7 +652,7 @@ Expected<BSplineFit> fit_least_squares_on_knots(const PointArray& points, std::s
 }
 
 Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const double> parameters,
-                                   const SmoothingOptions& options) {
+                                   const SmoothingOptions& options, Progress progress) {
   const int degree = options.degree;
   if (auto valid = check_fit_input(points, parameters, degree); !valid) return valid.error();
   if (degree < 2) {
@@ -628,7 +686,8 @@ Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const dou
                    " points: give λ > 0 or fewer control points"};
     }
   } else {
-    const auto chosen = gcv_smoothing(system, points.size());
+    GcvProgress evaluations(progress, grid_steps() + 1);
+    const auto chosen = gcv_smoothing(system, points.size(), evaluations);
     if (!chosen) return Error{"GCV cannot choose λ: the fit's normal equations are singular for every λ tried"};
     lambda = *chosen;
     from_gcv = true;
@@ -640,11 +699,12 @@ Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const dou
   }
   BSplineFit fit = make_result(system, std::move(*solution), points, parameters, degree, lambda);
   fit.smoothing_from_gcv = from_gcv;
+  progress(1.0);
   return fit;
 }
 
 Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const double> parameters, int degree,
-                                      Tolerance tolerance, FitEnds ends) {
+                                      Tolerance tolerance, FitEnds ends, Progress progress) {
   if (auto valid = check_fit_input(points, parameters, degree); !valid) return valid.error();
   if (auto finite = check_finite(tolerance.distance, "the tolerance"); !finite) return finite.error();
   if (!(tolerance.distance > 0.0)) {
@@ -662,6 +722,7 @@ Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const 
   std::vector<double> interior;  // interior knots, increasing
   std::vector<double> fallback;  // the last round's knots with only its worst new knot
   std::optional<BSplineFit> previous;
+  double reported = 0.0;  // the fraction last given to progress
   const auto not_reached = [&](const BSplineFit& fit, const char* why) {
     return Error{"the tolerance " + number_text(tolerance.distance) + " is not reached: max error " +
                  number_text(fit.max_error) + " at point " + std::to_string(fit.worst_point) + " with " +
@@ -683,7 +744,15 @@ Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const 
       return not_reached(*previous, "more control points make the normal equations singular in double precision");
     }
     BSplineFit fit = make_result(system, std::move(*solution), points, parameters, degree, 0.0);
-    if (fit.max_error <= tolerance.distance) return fit;
+    if (fit.max_error <= tolerance.distance) {
+      progress(1.0);
+      return fit;
+    }
+    // Progress: the share of points already within the tolerance (the best so far).
+    const auto within = std::count_if(fit.errors.begin(), fit.errors.end(),
+                                      [&](double e) { return e <= tolerance.distance; });
+    reported = std::max(reported, static_cast<double>(within) / static_cast<double>(points.size()));
+    progress(reported);
 
     // The knot spans with their points (a point at a knot belongs to the span on its right).
     std::vector<Span> spans;
