@@ -462,7 +462,8 @@ std::string rounded_text(double value) {
 Error smoothing_singular_error(const FitSystem& system, double lambda, std::size_t point_count) {
   const double scale = system.smoothing_scale();
   // log10(λ tr Ω / tr G) without forming the product, which overflows for λ near 1e308.
-  const double decades = std::log10(lambda) + std::log10(system.penalty_trace()) - std::log10(system.data_trace());
+  const double g = system.data_trace(), omega = system.penalty_trace();
+  const double decades = g > 0.0 && omega > 0.0 ? std::log10(lambda) + std::log10(omega) - std::log10(g) : 0.0;
   const std::string power = "10^" + std::to_string(static_cast<long>(std::lround(decades)));
   std::string message = "the smoothing λ = " + number_text(lambda);
   if (lambda >= scale) {
