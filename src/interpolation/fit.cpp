@@ -458,7 +458,7 @@ std::string rounded_text(double value) {
 /// with free ends); below λ₀ the data alone must determine the control
 /// points, which more control points than points (knots at every parameter)
 /// do not. The useful range is the one GCV searches: from λ₀ 10^-10 (all but
-/// interpolating) to λ₀ 10^6 (a straight line), λ₀ = tr G / tr Ω.
+/// interpolating) to λ₀ 10^6 (heavily smoothed), λ₀ = tr G / tr Ω.
 Error smoothing_singular_error(const FitSystem& system, double lambda, std::size_t point_count) {
   const double scale = system.smoothing_scale();
   // log10(λ tr Ω / tr G) without forming the product, which overflows for λ near 1e308.
@@ -476,10 +476,11 @@ Error smoothing_singular_error(const FitSystem& system, double lambda, std::size
   }
   return Error{message + " the fit's normal equations are singular; λ from about " +
                rounded_text(scale * std::pow(10.0, -tolerances::kGcvSearchDecadesBelow)) + " (nearly interpolating) to " +
-               rounded_text(scale * std::pow(10.0, tolerances::kGcvSearchDecadesAbove)) + " (a straight line) is " +
-               "meaningful here (λ₀·10^-" + rounded_text(tolerances::kGcvSearchDecadesBelow) + " to λ₀·10^" +
+               rounded_text(scale * std::pow(10.0, tolerances::kGcvSearchDecadesAbove)) +
+               " (heavily smoothed, towards a straight line) is the range GCV searches here (λ₀·10^-" +
+               rounded_text(tolerances::kGcvSearchDecadesBelow) + " to λ₀·10^" +
                rounded_text(tolerances::kGcvSearchDecadesAbove) + ", λ₀ = tr(BᵀB)/tr(Ω) = " + rounded_text(scale) +
-               "), or let GCV choose λ"};
+               "): give a λ there, or let GCV choose it"};
 }
 
 // --- GCV search ----------------------------------------------------------------------

@@ -125,7 +125,7 @@ awk 'BEGIN { srand(15); for (i = 0; i < 200; ++i) printf "%.17g,%.17g\n", i / 19
 expect_error "lambda too large" \
   "noisy.csv: the smoothing λ = 1e+308 is too large for these data: λ·tr(Ω) outweighs tr(BᵀB) by about 10^" \
   fit "$work/noisy.csv" --degree 3 --smoothing 1e308 --free-ends
-expect_error "lambda too large names the meaningful range" "(a straight line) is meaningful here" \
+expect_error "lambda too large names the meaningful range" "towards a straight line) is the range GCV searches here" \
   fit "$work/noisy.csv" --degree 3 --smoothing 1e308
 expect_error "lambda too small for knots at every parameter" \
   "the smoothing λ = 1e-308 is too small for these data: λ·tr(Ω) is about 10^" \

@@ -561,10 +561,11 @@ TEST(FitSmoothing, ALambdaThatMakesTheSystemSingularIsCalledTooLargeOrTooSmall) 
                        "10^"),
             0u)
       << large;
-  EXPECT_NE(large.find("(a straight line) is meaningful here (λ₀·10^-10 to λ₀·10^6, λ₀ = tr(BᵀB)/tr(Ω) = "),
+  EXPECT_NE(large.find("(heavily smoothed, towards a straight line) is the range GCV searches here (λ₀·10^-10 to "
+                       "λ₀·10^6, λ₀ = tr(BᵀB)/tr(Ω) = "),
             std::string::npos)
       << large;
-  EXPECT_NE(large.find("or let GCV choose λ"), std::string::npos) << large;
+  EXPECT_NE(large.find("): give a λ there, or let GCV choose it"), std::string::npos) << large;
   options.smoothing = 1e-308;
   const std::string small = error_of(fit_smoothing(points, t, options));
   EXPECT_EQ(small.find("the smoothing λ = 1e-308 is too small for these data: λ·tr(Ω) is about 10^"), 0u) << small;
