@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);
 
   CLI::App app{"casteljau: Bézier, B-spline and NURBS curves and surfaces, from the Bernstein basis to CNC output"};
+  app.name("casteljau");  // in usage lines, whatever path it was started by
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Help for every subcommand");
   int status = 0;
@@ -38,6 +39,8 @@ int main(int argc, char** argv) {
     // --help, --help-all, --version: printed on standard output, status 0.
     return app.exit(e);
   } catch (const CLI::RequiredError& e) {
+    // `casteljau` alone, or `casteljau --bogus`: say what is missing or wrong.
+    if (const auto message = unexpected_arguments(app)) return fail(*message);
     if (app.get_subcommands().empty()) return fail(missing_subcommand(app));
     return fail(e.what());
   } catch (const CLI::ExtrasError& e) {

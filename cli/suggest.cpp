@@ -92,25 +92,30 @@ std::optional<std::string> unknown_subcommand(const CLI::App& app, int argc, con
 }
 
 std::optional<std::string> unexpected_arguments(const CLI::App& app) {
-  for (const CLI::App* sub : app.get_subcommands()) {
-    const std::vector<std::string> extras = sub->remaining();
+  const std::vector<CLI::App*> parsed = app.get_subcommands();
+  std::vector<const CLI::App*> holders(parsed.begin(), parsed.end());
+  holders.push_back(&app);  // the extras of `casteljau --bogus eval ...` are the app's own
+  for (const CLI::App* holder : holders) {
+    const std::vector<std::string> extras = holder->remaining();
     if (extras.empty()) continue;
-    const std::string& name = sub->get_name();
+    const bool top = holder == &app;
+    const std::string name = top ? "casteljau" : holder->get_name();
+    const std::string help = top ? "casteljau --help" : "casteljau " + name + " --help";
     for (const auto& extra : extras) {
       if (extra.size() < 2 || extra[0] != '-') continue;
       const std::string option = extra.substr(0, extra.find('='));  // --at=0.5 is --at
       std::optional<std::string> near;
       if (option.rfind("--", 0) == 0) {
         std::vector<std::string> long_names;
-        for (const CLI::Option* known : sub->get_options())
+        for (const CLI::Option* known : holder->get_options())
           for (const auto& long_name : known->get_lnames()) long_names.push_back("--" + long_name);
         near = nearest_name(option, long_names);
       }
       if (near) return fmt::format("unknown option '{}' for {}; did you mean '{}'?", shown(option), name, *near);
-      return fmt::format("unknown option '{}' for {} (casteljau {} --help lists them)", shown(option), name, name);
+      return fmt::format("unknown option '{}' for {} ({} lists them)", shown(option), name, help);
     }
-    return fmt::format("unexpected argument '{}' for {} (casteljau {} --help shows its usage)", shown(extras.front()),
-                       name, name);
+    if (top) continue;  // a word before the subcommand is unknown_subcommand's
+    return fmt::format("unexpected argument '{}' for {} ({} shows its usage)", shown(extras.front()), name, help);
   }
   return std::nullopt;
 }

@@ -31,11 +31,13 @@ std::optional<std::string> nearest_name(std::string_view word, const std::vector
 /// (or the list of subcommands when none is near). Empty otherwise.
 std::optional<std::string> unknown_subcommand(const CLI::App& app, int argc, const char* const* argv);
 
-/// The message for arguments a subcommand did not expect (after CLI11's
-/// ExtrasError): "unknown option '--atx' for eval; did you mean '--at'?",
-/// "unknown option '--bogus' for eval (casteljau eval --help lists them)",
-/// "unexpected argument 'extra' for eval (casteljau eval --help shows its usage)".
-/// Empty when no subcommand holds the extras (CLI11's own message is kept).
+/// The message for arguments the parsed subcommand, or the app itself, did
+/// not expect (after CLI11's ExtrasError or RequiredError): "unknown option
+/// '--atx' for eval; did you mean '--at'?", "unknown option '--bogus' for eval
+/// (casteljau eval --help lists them)", "unknown option '--verison' for
+/// casteljau; did you mean '--version'?", "unexpected argument 'extra' for
+/// eval (casteljau eval --help shows its usage)". Empty when no extras are
+/// left (CLI11's own message is kept).
 std::optional<std::string> unexpected_arguments(const CLI::App& app);
 
 /// "a subcommand is required: eval, plot, ... (casteljau --help says what each does)".
