@@ -69,6 +69,7 @@ const Entry& entry_of(const CLI::App& sub) {
 constexpr std::size_t kDefaultWidth = 80;   ///< help in a pipe or a file: the traditional terminal
 constexpr std::size_t kNarrowestWidth = 40;  ///< below this a description column holds no sentence
 constexpr std::size_t kNameColumn = 30;      ///< where descriptions start (CLI11's own default)
+constexpr std::size_t kNarrowestDescription = 10;  ///< a description column keeps room for a word or two
 
 /// Characters of UTF-8 text: bytes that do not continue a sequence.
 std::size_t characters(std::string_view text) {
@@ -88,7 +89,9 @@ class WrappingFormatter : public CLI::Formatter {
 
   std::string make_description(const CLI::App* app) const override {
     const std::string description = app->get_description();
-    return description.empty() ? std::string() : joined(wrap(description, available()), 0) + "\n\n";
+    // A blank line before the usage, except inside --help-all's entries.
+    if (description.empty()) return {};
+    return joined(wrap(description, available()), 0) + (indent_ > 0 ? "\n" : "\n\n");
   }
 
   std::string make_option(const CLI::Option* option, bool is_positional) const override {
@@ -97,11 +100,6 @@ class WrappingFormatter : public CLI::Formatter {
 
   std::string make_subcommand(const CLI::App* sub) const override {
     return entry(sub->get_display_name(true), std::string(entry_of(*sub).summary));
-  }
-
-  std::string make_footer(const CLI::App* app) const override {
-    const std::string footer = app->get_footer();
-    return footer.empty() ? std::string() : footer + "\n";
   }
 
   std::string make_expanded(const CLI::App* sub) const override {
@@ -122,14 +120,9 @@ class WrappingFormatter : public CLI::Formatter {
     std::string text = "  " + name;
     if (description.empty()) return text + "\n";
     const std::size_t used = characters(text);
-    const std::size_t column = column_;
-    const std::size_t room = available() > column + 10 ? available() - column : 10;
-    if (used >= column) {
-      text += "\n" + std::string(column, ' ');
-    } else {
-      text += std::string(column - used, ' ');
-    }
-    return text + joined(wrap(description, room), column) + "\n";
+    const std::size_t room = std::max(available() - std::min(column_, available()), kNarrowestDescription);
+    text += used >= column_ ? "\n" + std::string(column_, ' ') : std::string(column_ - used, ' ');
+    return text + joined(wrap(description, room), column_) + "\n";
   }
 
   /// The lines joined by newlines, each after the first indented.

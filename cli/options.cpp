@@ -120,12 +120,12 @@ void set_action(CLI::App* command, int& status, CommandFiles files, std::functio
 bool is_standard_output(std::string_view path) { return path.empty() || path == "-"; }
 
 int write_standard_output(std::string_view text) {
+  erase_progress_line();  // standard output may be the same terminal
   if ((!text.empty() && std::fwrite(text.data(), 1, text.size(), stdout) != text.size()) || std::fflush(stdout) != 0) {
     // SIGPIPE is ignored (main.cpp): a closed pipe is this EPIPE, not a death by signal.
     const int error = errno;
     std::clearerr(stdout);
     if (error != EPIPE) {
-      erase_progress_line();
       std::fprintf(stderr, "casteljau: error: cannot write to standard output: %s\n", std::strerror(error));
     }
     return 1;
@@ -152,7 +152,7 @@ int write_figure_output(const std::string& path, const render::Figure& figure, r
 
 int write_summary(const std::string& output, std::string_view line) {
   if (!is_standard_output(output)) return write_standard_output(line);
-  erase_progress_line();
+  erase_progress_line();  // the summary takes the line on standard error
   std::fwrite(line.data(), 1, line.size(), stderr);
   return 0;
 }
