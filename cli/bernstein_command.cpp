@@ -21,16 +21,14 @@ struct BernsteinOptions {
 };
 
 int run_bernstein(const BernsteinOptions& options) {
+  const auto format = figure_output_format(options.output);
+  if (!format) return fail(format.error());
   const auto n = whole_number("N", options.degree, 1, render::kMaxPlottedBasisDegree);
   if (!n) return fail(n.error());
   auto figure = render::bernstein_basis_figure(static_cast<int>(*n), options.without_ends);
   if (!figure) return fail(figure.error());
-  Status written;
-  {  // the progress line is erased before any message
-    TerminalProgress progress("bernstein");
-    written = render::write_figure(*figure, options.output, progress.callback());
-  }
-  return written ? 0 : fail(written.error());
+  TerminalProgress progress("bernstein");
+  return write_figure_output(options.output, *figure, *format, progress.callback());
 }
 
 }  // namespace
@@ -43,11 +41,10 @@ void add_bernstein_command(CLI::App& app, int& status) {
                   "or PDF figure (by the extension of -o). 1 <= N <= {}.",
                   render::kMaxPlottedBasisDegree));
   bernstein->add_option("N", options->degree, "The degree")->required();
-  bernstein->add_option("-o,--output", options->output, "The figure to write: FILE.svg, FILE.png or FILE.pdf")
-      ->type_name("FILE")
-      ->required();
+  CLI::Option* output =
+      bernstein->add_option("-o,--output", options->output, kFigureOutputHelp)->type_name("FILE")->required();
   bernstein->add_flag("--without-ends", options->without_ends, "Leave out B_(N,0) and B_(N,N) (N >= 2)");
-  bernstein->callback([options, &status] { status = run_bernstein(*options); });
+  set_action(bernstein, status, {{}, output}, [options] { return run_bernstein(*options); });
 }
 
 }  // namespace casteljau::cli

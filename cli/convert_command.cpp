@@ -5,9 +5,6 @@
 // written atomically: on bad input nothing is written.
 #include <fmt/format.h>
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <memory>
 #include <string>
 #include <variant>
@@ -47,12 +44,6 @@ Model to_bezier_pieces_model(const Model& model) {
                  // Surfaces are refused by run_convert before this point.
                  [](const auto& surface) -> Model { return surface; }},
       model);
-}
-
-/// "the piecewise_bezier model in 'm.json'" or "models[1] (piecewise_bezier) in 'm.json'".
-std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file) {
-  if (models.size() == 1) return fmt::format("the {} model in '{}'", type_name(models[index]), display_name(file));
-  return fmt::format("models[{}] ({}) in '{}'", index, type_name(models[index]), display_name(file));
 }
 
 int run_convert(const ConvertOptions& options) {
@@ -106,16 +97,16 @@ void add_convert_command(CLI::App& app, int& status) {
       "model: a B-spline's Bézier pieces, each then on [i, i+1]), bspline (a bspline model: a Bézier curve on "
       "clamped knots, a piecewise curve with its joints as knots of multiplicity p), json (the models as read). "
       "svg, dxf, iges, gcode and meshes are not supported yet.");
-  convert
-      ->add_option("MODEL", options->model,
-                   "Model JSON, or a CSV point set taken as the control polygon of one Bézier curve")
-      ->required();
+  CLI::Option* model = convert
+                           ->add_option("MODEL", options->model,
+                                        "Model JSON, or a CSV point set taken as the control polygon of one "
+                                        "Bézier curve")
+                           ->required();
   convert->add_option("--to", options->format, "The target: bezier-pieces, bspline or json")
       ->type_name("FORMAT")
       ->required();
-  convert->add_option("-o,--output", options->output, "Write to FILE (atomically) instead of standard output")
-      ->type_name("FILE");
-  convert->callback([options, &status] { status = run_convert(*options); });
+  CLI::Option* output = convert->add_option("-o,--output", options->output, kOutputHelp)->type_name("FILE");
+  set_action(convert, status, {{model}, output}, [options] { return run_convert(*options); });
 }
 
 }  // namespace casteljau::cli

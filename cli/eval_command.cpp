@@ -29,39 +29,11 @@ struct EvalOptions {
   std::string output;
 };
 
-/// "the bezier model in 'm.json'" or "models[1] (piecewise_bezier) in 'm.json'".
-std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file) {
-  const std::string name = display_name(file);
-  if (models.size() == 1) return fmt::format("the {} model in '{}'", type_name(models[index]), name);
-  return fmt::format("models[{}] ({}) in '{}'", index, type_name(models[index]), name);
-}
-
 std::string domain_text(const Interval& domain) { return fmt::format("[{}, {}]", domain.lower, domain.upper); }
 
 /// "[0, 1] x [0, 2]": the parameter rectangle of a surface.
 std::string domain_text(const SurfaceView& view) {
   return domain_text(view.domain_u()) + " x " + domain_text(view.domain_v());
-}
-
-/// Text without the spaces and tabs around it.
-std::string_view trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t");
-  return text.substr(first, last - first + 1);
-}
-
-/// "u,v": two numbers separated by one comma (blanks around each allowed).
-Expected<std::array<double, 2>> parse_pair(std::string_view text) {
-  const auto comma = text.find(',');
-  if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos) {
-    return Error{fmt::format("'{}' is not a parameter pair u,v", text.substr(0, 60))};
-  }
-  auto u = parse_number(trimmed(text.substr(0, comma)));
-  if (!u) return u.error();
-  auto v = parse_number(trimmed(text.substr(comma + 1)));
-  if (!v) return v.error();
-  return std::array<double, 2>{*u, *v};
 }
 
 /// The parameters and derivative order of the curves in the file.
@@ -180,8 +152,8 @@ int run_eval(const EvalOptions& options) {
   }
   if (any_surface) {
     for (const auto& text : options.at) {
-      auto pair = parse_pair(text);
-      if (!pair) return fail(fmt::format("--at: {} (a surface takes u,v)", pair.error().message));
+      auto pair = pair_option("--at", text, "a parameter pair u,v");
+      if (!pair) return fail(pair.error().message + " (a surface takes u,v)");
       surface.at.push_back(*pair);
     }
     // "0" (the default) is the point for both kinds; otherwise ku,kv.
@@ -325,25 +297,31 @@ void add_eval_command(CLI::App& app, int& status) {
       "--samples grid (u the slow index: line a*N+b is S(u_a, v_b)) and --derivative ku,kv for the partial "
       "derivative d^(ku+kv)S / du^ku dv^kv. The lines follow the order --at, --params, --samples. For several "
       "models, each is evaluated in order at the same parameters and the lines follow one another.");
-  eval->add_option("MODEL", options->model,
-                   "Model JSON, or a CSV point set taken as the control polygon of one Bézier curve (by extension "
-                   ".json/.csv, otherwise JSON when the text starts with '{')")
-      ->required();
-  eval->add_option("--at", options->at, "Evaluate at parameter T of a curve, or u,v of a surface (repeat for several; in the order given)")
+  CLI::Option* model =
+      eval->add_option("MODEL", options->model,
+                       "Model JSON, or a CSV point set taken as the control polygon of one Bézier curve (by extension "
+                       ".json/.csv, otherwise JSON when the text starts with '{')")
+          ->required();
+  eval->add_option("--at", options->at,
+                   "Evaluate at parameter T of a curve, or u,v of a surface (repeat for several; in the order given)")
       ->type_name("T|u,v")
       ->allow_extra_args(false);
-  eval->add_option("--params", options->params, "Evaluate at the parameters of a CSV file, in order: one column T for a curve, two columns u,v for a surface")
-      ->type_name("FILE.csv");
-  eval->add_option("--samples", options->samples,
-                   "Evaluate at N evenly spaced parameters over the whole domain, ends included (N = 1: the start); N x N for a "
-                   "surface, u the slow index")
+  CLI::Option* params = eval->add_option("--params", options->params,
+                                         "Evaluate at the parameters of a CSV file, in order: one column T for a "
+                                         "curve, two columns u,v for a surface")
+                            ->type_name("FILE.csv");
+  eval->add_option(
+          "--samples", options->samples,
+          "Evaluate at N evenly spaced parameters over the whole domain, ends included (N = 1: the start); N x N for a "
+          "surface, u the slow index")
       ->type_name("N");
-  eval->add_option("--derivative", options->derivative, "Print K-th derivatives instead of points (K = 0: points); for a surface ku,kv, the partial derivative "
-                   "d^(ku+kv)S / du^ku dv^kv (0 or 0,0: points)")
+  eval->add_option(
+          "--derivative", options->derivative,
+          "Print K-th derivatives instead of points (K = 0: points); for a surface ku,kv, the partial derivative "
+          "d^(ku+kv)S / du^ku dv^kv (0 or 0,0: points)")
       ->type_name("K|ku,kv");
-  eval->add_option("-o,--output", options->output, "Write to FILE (atomically) instead of standard output")
-      ->type_name("FILE");
-  eval->callback([options, &status] { status = run_eval(*options); });
+  CLI::Option* output = eval->add_option("-o,--output", options->output, kOutputHelp)->type_name("FILE");
+  set_action(eval, status, {{model, params}, output}, [options] { return run_eval(*options); });
 }
 
 }  // namespace casteljau::cli

@@ -40,13 +40,6 @@ struct FitOptions {
               *param_option = nullptr;
 };
 
-/// A finite number (CSV rules: parse_number), with the option named in errors.
-Expected<double> number_option(const char* option, const std::string& text) {
-  auto value = parse_number(text);
-  if (!value) return Error{fmt::format("{}: {}", option, value.error().message)};
-  return *value;
-}
-
 /// What to compute, from the options alone (before the file is read).
 struct FitRequest {
   int degree = 3;
@@ -161,9 +154,7 @@ int run_fit(const FitOptions& options) {
   const std::string text = models_to_json({Model{fit->curve}});
   const std::string summary = summary_of(*fit);
   if (const int status = write_output(options.output, text); status != 0) return status;
-  // The summary goes to standard output, unless the model already owns it.
-  std::fwrite(summary.data(), 1, summary.size(), options.output.empty() ? stderr : stdout);
-  return 0;
+  return write_summary(options.output, summary);
 }
 
 }  // namespace
@@ -179,8 +170,9 @@ void add_fit_command(CLI::App& app, int& status) {
       "knots sit at every parameter: with --degree 3, --free-ends and --function that is scipy's "
       "make_smoothing_spline). The curve runs over [t_0, t_m] (the parameters, normalized to [0, 1] unless "
       "--function). A summary line (control points, max and rms error, lambda, GCV score, effective degrees of "
-      "freedom) goes to standard output with -o, else to standard error.");
-  command->add_option("POINTS", options->points, "CSV point set of 2 or more columns (x,y or x,y,z)")->required();
+      "freedom) goes to standard output with -o FILE, else to standard error.");
+  CLI::Option* points =
+      command->add_option("POINTS", options->points, "CSV point set of 2 or more columns (x,y or x,y,z)")->required();
   command->add_option("--degree", options->degree, "The degree p >= 1 (2 or more with --smoothing)")
       ->type_name("P")
       ->required();
@@ -203,9 +195,8 @@ void add_fit_command(CLI::App& app, int& status) {
                     "[x_0, x_n]");
   command->add_flag("--free-ends", options->free_ends,
                     "Fit the first and last points like the others (default: the curve passes through them)");
-  command->add_option("-o,--output", options->output, "Write to FILE (atomically) instead of standard output")
-      ->type_name("FILE");
-  command->callback([options, &status] { status = run_fit(*options); });
+  CLI::Option* output = command->add_option("-o,--output", options->output, kOutputHelp)->type_name("FILE");
+  set_action(command, status, {{points}, output}, [options] { return run_fit(*options); });
 }
 
 }  // namespace casteljau::cli

@@ -27,8 +27,8 @@ int run_gallery(const GalleryOptions& options) {
     figures = render::write_gallery(options.directory, examples, progress.callback());
   }
   if (!figures) return fail(figures.error());
-  fmt::print("wrote {} figures (SVG and PNG) and index.html to {}\n", figures->size(), options.directory);
-  return 0;
+  return write_standard_output(
+      fmt::format("wrote {} figures (SVG and PNG) and index.html to {}\n", figures->size(), options.directory));
 }
 
 }  // namespace
@@ -43,7 +43,9 @@ void add_gallery_command(CLI::App& app, int& status) {
   gallery->add_option("--examples", options->examples,
                       "Folder with the seeds' CSV files (default: the examples/ folder casteljau was built from)")
       ->type_name("DIR");
-  gallery->callback([options, &status] { status = run_gallery(*options); });
+  // It writes NAME.svg, NAME.png and index.html and reads only CSV files:
+  // DIR can hold no input, even when it is the examples folder.
+  set_action(gallery, status, {}, [options] { return run_gallery(*options); });
 }
 
 }  // namespace casteljau::cli

@@ -66,23 +66,6 @@ struct InterpolateOptions {
               *nodes_option = nullptr, *order_option = nullptr;
 };
 
-/// A vector written "x,y[,z...]" with as many coordinates as `count` allows.
-Expected<Point> vector_option(const char* option, const std::string& text) {
-  Point values;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::string_view field = std::string_view(text).substr(start, comma == std::string::npos ? std::string::npos
-                                                                                                  : comma - start);
-    auto value = parse_number(field);
-    if (!value) return Error{fmt::format("{}: {}", option, value.error().message)};
-    values.push_back(*value);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return values;
-}
-
 /// An end tangent for a curve of dimension d. For a function y(x) the
 /// tangent may also be given as its d − 1 slopes dy/dx: the x component of
 /// the derivative of (x, y(x)) with respect to x is 1.
@@ -361,8 +344,9 @@ void add_interpolate_command(CLI::App& app, int& status) {
       "condition), bspline (any degree, averaged knots), lagrange (one polynomial), natural (order q: degree 2q-1), "
       "hermite (points with tangent columns x,y,dx,dy). Parameters are normalized to [0, 1] unless the method fixes "
       "them; --function takes the first column as x.");
-  command->add_option("POINTS", options->points, "CSV point set (x,y or x,y,z; hermite: x,y,dx,dy or x,y,z,dx,dy,dz)")
-      ->required();
+  CLI::Option* points =
+      command->add_option("POINTS", options->points, "CSV point set (x,y or x,y,z; hermite: x,y,dx,dy or x,y,z,dx,dy,dz)")
+          ->required();
   command->add_option("--method", options->method,
                       "c1-bezier, catmull-rom, cubic, bspline, lagrange, natural or hermite")
       ->type_name("M")
@@ -402,9 +386,8 @@ void add_interpolate_command(CLI::App& app, int& status) {
   command->add_flag("--function", options->function,
                     "The first column is x (strictly increasing) and the parameter: the curve (x, s(x)) over "
                     "[x_0, x_n]");
-  command->add_option("-o,--output", options->output, "Write to FILE (atomically) instead of standard output")
-      ->type_name("FILE");
-  command->callback([options, &status] { status = run_interpolate(*options); });
+  CLI::Option* output = command->add_option("-o,--output", options->output, kOutputHelp)->type_name("FILE");
+  set_action(command, status, {{points}, output}, [options] { return run_interpolate(*options); });
 }
 
 }  // namespace casteljau::cli

@@ -1,4 +1,5 @@
-// The shared option readers and the output of every subcommand (options.hpp).
+// The shared option readers, the files of a command and the output of every
+// subcommand (options.hpp).
 #include "options.hpp"
 
 #include <fmt/format.h>
@@ -7,11 +8,43 @@
 #include <charconv>
 #include <cstdio>
 #include <cstring>
-#include <iostream>
+#include <utility>
 
+#include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
+#include "progress.hpp"
 
 namespace casteljau::cli {
+namespace {
+
+/// The checks of set_action: an empty -o, an output that is an input.
+Status check_files(const CommandFiles& files) {
+  if (files.output == nullptr || !given(files.output)) return {};
+  for (const std::string& output : files.output->results()) {
+    if (output.empty()) {
+      return Error{"-o '': the file name is empty (-o - is standard output)"};
+    }
+    if (output == "-") continue;
+    for (const CLI::Option* input : files.inputs) {
+      for (const std::string& path : input->results()) {
+        if (!same_regular_file(path, output)) continue;
+        return Error{fmt::format("-o '{}' is the input {} '{}': writing the output would destroy it; choose "
+                                 "another output file",
+                                 display_name(output), input->get_name(), display_name(path))};
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string_view trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t");
+  return text.substr(first, last - first + 1);
+}
 
 bool given(const CLI::Option* option) { return option != nullptr && option->count() > 0; }
 
@@ -28,23 +61,100 @@ Expected<long long> whole_number(std::string_view option, std::string_view text,
   return value;
 }
 
+Expected<double> number_option(std::string_view option, std::string_view text) {
+  auto value = parse_number(text);
+  if (!value) return Error{fmt::format("{}: {}", option, value.error().message)};
+  return *value;
+}
+
+Expected<Point> vector_option(std::string_view option, std::string_view text) {
+  Point values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string_view field = text.substr(start, comma == std::string_view::npos ? std::string_view::npos
+                                                                                      : comma - start);
+    auto value = number_option(option, trimmed(field));
+    if (!value) return value.error();
+    values.push_back(*value);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return values;
+}
+
+Expected<std::array<double, 2>> pair_option(std::string_view option, std::string_view text, std::string_view what) {
+  const auto comma = text.find(',');
+  if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos) {
+    return Error{fmt::format("{}: '{}' is not {}", option, text.substr(0, 60), what)};
+  }
+  auto values = vector_option(option, text);
+  if (!values) return values.error();
+  return std::array<double, 2>{(*values)[0], (*values)[1]};
+}
+
+std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file) {
+  const std::string name = display_name(file);
+  if (models.size() == 1) return fmt::format("the {} model in '{}'", type_name(models[index]), name);
+  return fmt::format("models[{}] ({}) in '{}'", index, type_name(models[index]), name);
+}
+
 int fail(std::string_view message) {
-  std::cerr << "casteljau: error: " << message << '\n';
+  erase_progress_line();
+  std::fprintf(stderr, "casteljau: error: %.*s\n", static_cast<int>(message.size()), message.data());
   return 2;
 }
 
 int fail(const Error& error) { return fail(error.message); }
 
-int write_output(const std::string& path, std::string_view text) {
-  if (!path.empty()) {
-    if (auto written = casteljau::write_file_atomically(path, text); !written) return fail(written.error());
-    return 0;
-  }
+void set_action(CLI::App* command, int& status, CommandFiles files, std::function<int()> run) {
+  command->callback([&status, files = std::move(files), run = std::move(run)] {
+    if (auto checked = check_files(files); !checked) {
+      status = fail(checked.error());
+      return;
+    }
+    status = run();
+  });
+}
+
+bool is_standard_output(std::string_view path) { return path.empty() || path == "-"; }
+
+int write_standard_output(std::string_view text) {
+  erase_progress_line();  // standard output may be the same terminal
   if ((!text.empty() && std::fwrite(text.data(), 1, text.size(), stdout) != text.size()) || std::fflush(stdout) != 0) {
-    // Not bad input: the environment failed (disk full, closed pipe).
-    std::fprintf(stderr, "casteljau: error: cannot write to standard output: %s\n", std::strerror(errno));
+    // SIGPIPE is ignored (main.cpp): a closed pipe is this EPIPE, not a death by signal.
+    const int error = errno;
+    std::clearerr(stdout);
+    if (error != EPIPE) {
+      std::fprintf(stderr, "casteljau: error: cannot write to standard output: %s\n", std::strerror(error));
+    }
     return 1;
   }
+  return 0;
+}
+
+int write_output(const std::string& path, std::string_view text) {
+  if (is_standard_output(path)) return write_standard_output(text);
+  if (auto written = write_file_atomically(path, text); !written) return fail(written.error());
+  return 0;
+}
+
+Expected<render::FigureFormat> figure_output_format(const std::string& path) {
+  if (path == "-") return render::FigureFormat::svg;
+  return render::figure_format_of(path);
+}
+
+int write_figure_output(const std::string& path, const render::Figure& figure, render::FigureFormat format,
+                        Progress progress) {
+  auto bytes = render::figure_document(figure, format, progress);
+  if (!bytes) return fail(bytes.error());
+  return write_output(path, *bytes);
+}
+
+int write_summary(const std::string& output, std::string_view line) {
+  if (!is_standard_output(output)) return write_standard_output(line);
+  erase_progress_line();  // the summary takes the line on standard error
+  std::fwrite(line.data(), 1, line.size(), stderr);
   return 0;
 }
 

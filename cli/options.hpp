@@ -1,14 +1,22 @@
 #pragma once
 // What every subcommand shares: reading option values the same way, the
-// error line and exit status, and writing the output. One place each, so
-// that `casteljau eval --samples x` and `casteljau fit --degree x` say the
-// same thing in the same words (docs/cli.md, "Exit status").
+// error line and exit status, the files a command reads and writes, and
+// writing its output. One place each, so that `casteljau eval --samples x`
+// and `casteljau fit --degree x` say the same thing in the same words, and
+// so that every command refuses `-o ''` and an output that is one of its
+// inputs the same way (docs/cli.md, "General rules").
 
 #include <CLI/CLI.hpp>
+#include <array>
+#include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "casteljau/core/expected.hpp"
+#include "casteljau/core/point_array.hpp"
+#include "casteljau/io/model.hpp"
+#include "casteljau/render/write.hpp"
 
 namespace casteljau::cli {
 
@@ -22,14 +30,88 @@ bool given(const CLI::Option* option);
 /// limit of 1000" (also for digits beyond 64 bits).
 Expected<long long> whole_number(std::string_view option, std::string_view text, long long lowest, long long highest);
 
+/// A finite number by the CSV rules (io/csv.hpp's parse_number), the option
+/// named in errors: "--smoothing: 'x' is not a number".
+Expected<double> number_option(std::string_view option, std::string_view text);
+
+/// One or more numbers separated by commas, blanks around each allowed:
+/// "1,0" or "1, 0, 2" ("--start-tangent: 'a' is not a number").
+Expected<Point> vector_option(std::string_view option, std::string_view text);
+
+/// Exactly two numbers "a,b" (vector_option); `what` names the pair in the
+/// error: "--at: '0.5' is not a parameter pair u,v", "--view: '30' is not a
+/// pair azimuth,elevation in degrees".
+Expected<std::array<double, 2>> pair_option(std::string_view option, std::string_view text, std::string_view what);
+
+/// Text without the blanks and tabs around it.
+std::string_view trimmed(std::string_view text);
+
+/// "the bezier model in 'm.json'" (a file with one model) or "models[1]
+/// (piecewise_bezier) in 'm.json'": a model as messages name it.
+std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file);
+
 /// Prints "casteljau: error: <message>" on stderr and returns 2 (bad input).
+/// A progress line on the terminal is erased first (cli/progress.hpp).
 int fail(std::string_view message);
 /// The same for an Error from the library.
 int fail(const Error& error);
 
-/// Writes a command's output: to `path` atomically (nothing is half-written;
-/// a file error is bad input, status 2) or, when `path` is empty, to standard
-/// output (a failure there is the environment's, status 1). 0 on success.
+/// The options of a subcommand that name files: `inputs`, whose every value
+/// is a file the command reads (MODEL, --params FILE, each INPUT of plot),
+/// and `output`, the file it writes (-o; "-" is standard output).
+struct CommandFiles {
+  std::vector<const CLI::Option*> inputs;
+  const CLI::Option* output = nullptr;
+};
+
+/// Makes `run` the subcommand's action; its exit status goes to `status`.
+/// Before `run`, the checks every command shares, from the command line
+/// alone: `-o ''` is refused (-o - is standard output), and so is an output
+/// that is one of the inputs, the same regular file by device and inode
+/// (through symbolic and hard links, ./ and ../ spellings: io/file.hpp's
+/// same_regular_file), which writing would destroy.
+void set_action(CLI::App* command, int& status, CommandFiles files, std::function<int()> run);
+
+/// The help of an optional -o: the same words in every subcommand.
+inline constexpr const char* kOutputHelp =
+    "Write to FILE (atomically; a FIFO or a device in place) instead of standard output; - is standard output";
+
+/// The help of a figure command's -o (plot, bernstein).
+inline constexpr const char* kFigureOutputHelp =
+    "The figure to write: FILE.svg, FILE.png or FILE.pdf (by the extension, any case); - writes SVG to standard "
+    "output";
+
+/// Whether the value of -o means standard output: -o not given (empty) or "-".
+bool is_standard_output(std::string_view path);
+
+/// Writes `text` to standard output. A failure is the environment's, not bad
+/// input: status 1, with one line "casteljau: error: cannot write to standard
+/// output: No space left on device" on stderr, except for a closed pipe
+/// (`| head -1`), where the reader left on purpose and a message would only
+/// break into its output: then status 1 alone (docs/cli.md, "Exit status").
+/// 0 on success.
+int write_standard_output(std::string_view text);
+
+/// Writes a command's output: to standard output when is_standard_output(path)
+/// (write_standard_output), else to the file (io/file.hpp's
+/// write_file_atomically: nothing half-written, FIFOs and devices written in
+/// place; a file error is bad input, status 2). 0 on success.
 int write_output(const std::string& path, std::string_view text);
+
+/// The format of a figure written to `path`: by its extension
+/// (render::figure_format_of: an error naming the file before anything is
+/// read), SVG, the text format, for standard output (-o -).
+Expected<render::FigureFormat> figure_output_format(const std::string& path);
+
+/// Writes the figure in `format` (render::figure_document) by write_output:
+/// to the file, or to standard output for -o -; `progress` as for the
+/// figure's layout. 0 on success.
+int write_figure_output(const std::string& path, const render::Figure& figure, render::FigureFormat format,
+                        Progress progress = {});
+
+/// A command's summary line ("fit: 12 control points, ..."): on standard
+/// output, unless the command's output goes there (no -o, or -o -), then on
+/// standard error, so that the output stays exactly the file it would be.
+int write_summary(const std::string& output, std::string_view line);
 
 }  // namespace casteljau::cli

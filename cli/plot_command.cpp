@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "casteljau/io/csv.hpp"
+#include "casteljau/io/file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/render/plots.hpp"
 #include "casteljau/render/surface_plots.hpp"
@@ -35,12 +36,6 @@ struct PlotCommandOptions {
   std::string view;
   int iso_curves = 11;
 };
-
-std::string lowercase_extension(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
 
 /// How a CSV point set is drawn: as the control polygon of one Bézier curve
 /// (as for eval, the default), or as data: its points, the polyline through
@@ -83,13 +78,9 @@ Expected<render::PlotSource> read_source(const std::string& path, const CsvStyle
 
 /// Writes the figure, with a progress line while its curves are flattened
 /// (erased before any message).
-int write_plot(const render::Figure& figure, const std::string& path) {
-  Status written;
-  {
-    TerminalProgress progress("plot");
-    written = render::write_figure(figure, path, progress.callback());
-  }
-  return written ? 0 : fail(written.error());
+int write_plot(const render::Figure& figure, const std::string& path, render::FigureFormat format) {
+  TerminalProgress progress("plot");
+  return write_figure_output(path, figure, format, progress.callback());
 }
 
 int run_plot(const PlotCommandOptions& options) {
@@ -104,12 +95,9 @@ int run_plot(const PlotCommandOptions& options) {
     if (!t) return fail("--construction: " + t.error().message);
     plot.bezier.construction = *t;
   }
-  // Refuse a bad output name before reading anything (write_figure checks it
-  // again; this keeps the message about the output first).
-  const std::string extension = lowercase_extension(options.output);
-  if (extension != ".svg" && extension != ".png" && extension != ".pdf")
-    return fail(fmt::format("cannot write '{}': unknown figure format '{}' (use .svg, .png or .pdf)", options.output,
-                            extension.empty() ? "no extension" : extension));
+  // Refuse a bad output name before reading anything.
+  const auto format = figure_output_format(options.output);
+  if (!format) return fail(format.error());
   // --points-only is the older name of --data-points.
   const CsvStyle csv{options.data_points || options.points_only, options.data_polyline};
   std::vector<render::PlotSource> sources;
@@ -137,22 +125,21 @@ int run_plot(const PlotCommandOptions& options) {
       return fail(fmt::format("--iso-curves: {} is not in [2, 1000]", options.iso_curves));
     surface.iso_curves = options.iso_curves;
     if (!options.view.empty()) {
-      const auto comma = options.view.find(',');
-      if (comma == std::string::npos) return fail(fmt::format("--view '{}': expected azimuth,elevation in degrees", options.view.substr(0, 60)));
-      auto azimuth = parse_number(options.view.substr(0, comma));
-      if (!azimuth) return fail("--view: azimuth " + azimuth.error().message);
-      auto elevation = parse_number(options.view.substr(comma + 1));
-      if (!elevation) return fail("--view: elevation " + elevation.error().message);
-      if (!(std::abs(*elevation) <= 90.0)) return fail(fmt::format("--view: elevation {} is not in [-90, 90]", *elevation));
-      surface.view = render::ViewAngles{*azimuth, *elevation};
+      auto view = pair_option("--view", options.view, "a pair azimuth,elevation in degrees");
+      if (!view) return fail(view.error());
+      const auto [azimuth, elevation] = *view;
+      if (!(std::abs(elevation) <= 90.0)) {
+        return fail(fmt::format("--view: elevation {} is not in [-90, 90]", elevation));
+      }
+      surface.view = render::ViewAngles{azimuth, elevation};
     }
-    auto figure = render::surface_plot_figure(sources, surface, extension != ".svg");
+    auto figure = render::surface_plot_figure(sources, surface, *format != render::FigureFormat::svg);
     if (!figure) return fail(figure.error());
-    return write_plot(*figure, options.output);
+    return write_plot(*figure, options.output, *format);
   }
   auto figure = render::plot_figure(sources, plot);
   if (!figure) return fail(figure.error());
-  return write_plot(*figure, options.output);
+  return write_plot(*figure, options.output, *format);
 }
 
 }  // namespace
@@ -168,11 +155,11 @@ void add_plot_command(CLI::App& app, int& status) {
       "Surfaces (drawn apart from curves) are seen in an orthographic view (--view; surfaces in R^2 in their "
       "plane): their iso-curves, with --control-polygon their control nets, with --points their control points; "
       "PNG and PDF add a panel with the surfaces tessellated and shaded (Lambert, painter's algorithm).");
-  plot->add_option("INPUT", options->inputs, "Model JSON (.json) or CSV point set (.csv); several are drawn together")
-      ->required();
-  plot->add_option("-o,--output", options->output, "The figure to write: FILE.svg, FILE.png or FILE.pdf")
-      ->type_name("FILE")
-      ->required();
+  CLI::Option* inputs = plot->add_option("INPUT", options->inputs,
+                                         "Model JSON (.json) or CSV point set (.csv); several are drawn together")
+                            ->required();
+  CLI::Option* output =
+      plot->add_option("-o,--output", options->output, kFigureOutputHelp)->type_name("FILE")->required();
   plot->add_flag("--control-polygon", options->control_polygon, "Draw each control polygon (dashed gray)");
   plot->add_flag("--points", options->points, "Draw the control points (red discs)");
   plot->add_option("--construction", options->construction,
@@ -194,7 +181,7 @@ void add_plot_command(CLI::App& app, int& status) {
   plot->add_option("--iso-curves", options->iso_curves,
                    "Surfaces: iso-curves per direction, evenly spaced over the domain, ends included (default 11)")
       ->type_name("N");
-  plot->callback([options, &status] { status = run_plot(*options); });
+  set_action(plot, status, {{inputs}, output}, [options] { return run_plot(*options); });
 }
 
 }  // namespace casteljau::cli

@@ -12,7 +12,13 @@
 
 namespace casteljau::cli {
 
-/// Reports one command's progress; erases its line when destroyed.
+/// Erases the progress line now on the terminal, if any, so that a message
+/// (an error, a summary) starts on a clean line; the reporter draws it again
+/// at its next update. fail() and write_summary() call it.
+void erase_progress_line();
+
+/// Reports one command's progress; erases its line when destroyed. One at a
+/// time: a reporter made while another lives takes the line over until it ends.
 class TerminalProgress {
  public:
   /// `label` names the work: "tessellate", "gallery: figure 12 of 40".
@@ -28,12 +34,16 @@ class TerminalProgress {
   /// The library's view of this reporter: pass it to tessellate, plot_figure...
   Progress callback();
 
+  /// Erases this reporter's line if it is shown (erase_progress_line).
+  void erase();
+
  private:
   std::string label_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_shown_;
   bool enabled_ = false;
   bool shown_ = false;
+  TerminalProgress* previous_ = nullptr;  ///< the reporter this one took the line from
 };
 
 }  // namespace casteljau::cli

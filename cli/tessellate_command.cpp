@@ -36,26 +36,15 @@ struct TessellateOptions {
 
 enum class MeshFormat { obj, stl, ply };
 
-/// The format named by the output's extension, any case.
+/// The format named by the output's extension, any case; OBJ, the text
+/// format, for standard output (-o -).
 Expected<MeshFormat> format_of(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  const auto slash = path.find_last_of('/');
-  std::string extension;
-  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) extension = path.substr(dot + 1);
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == "obj") return MeshFormat::obj;
-  if (extension == "stl") return MeshFormat::stl;
-  if (extension == "ply") return MeshFormat::ply;
+  const std::string extension = lowercase_extension(path);
+  if (extension == ".obj" || path == "-") return MeshFormat::obj;
+  if (extension == ".stl") return MeshFormat::stl;
+  if (extension == ".ply") return MeshFormat::ply;
   return Error{fmt::format("-o: '{}' does not end in .obj, .stl or .ply (the mesh format comes from the extension)",
                            display_name(path))};
-}
-
-/// "the bspline model in 'm.json'" or "models[1] (bspline) in 'm.json'".
-std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file) {
-  const std::string name = display_name(file);
-  if (models.size() == 1) return fmt::format("the {} model in '{}'", type_name(models[index]), name);
-  return fmt::format("models[{}] ({}) in '{}'", index, type_name(models[index]), name);
 }
 
 std::string summary_of(const TriangleMesh& mesh) {
@@ -103,9 +92,7 @@ int run_tessellate(const TessellateOptions& options) {
     case MeshFormat::ply: bytes = to_ply(*mesh); break;
   }
   if (const int status = write_output(options.output, bytes); status != 0) return status;
-  const std::string summary = summary_of(*mesh);
-  std::fwrite(summary.data(), 1, summary.size(), stdout);
-  return 0;
+  return write_summary(options.output, summary_of(*mesh));
 }
 
 }  // namespace
@@ -119,15 +106,19 @@ void add_tessellate_command(CLI::App& app, int& status) {
       "is within E of the surface at the linearly interpolated parameters (docs/surfaces.md). Adaptive: flat "
       "regions get large triangles. Per-vertex normals are the surface's. Written to MESH as Wavefront OBJ, "
       "binary STL or binary little-endian PLY, by its extension (any case). One summary line on standard "
-      "output: triangles, vertices, and whether the mesh is watertight.");
-  command->add_option("SURFACE", options->model, "Model JSON file with one or more surfaces in 3D")->required();
+      "output (standard error with -o -): triangles, vertices, and whether the mesh is watertight.");
+  CLI::Option* surface =
+      command->add_option("SURFACE", options->model, "Model JSON file with one or more surfaces in 3D")->required();
   command->add_option("--tolerance", options->tolerance, "Largest distance E > 0 from the mesh to the surface")
       ->type_name("E")
       ->required();
-  command->add_option("-o,--output", options->output, "MESH.obj, MESH.stl or MESH.ply (written atomically)")
-      ->type_name("FILE")
-      ->required();
-  command->callback([options, &status] { status = run_tessellate(*options); });
+  CLI::Option* output = command
+                            ->add_option("-o,--output", options->output,
+                                         "MESH.obj, MESH.stl or MESH.ply (written atomically; a FIFO or a device in "
+                                         "place); - writes OBJ to standard output")
+                            ->type_name("FILE")
+                            ->required();
+  set_action(command, status, {{surface}, output}, [options] { return run_tessellate(*options); });
 }
 
 }  // namespace casteljau::cli

@@ -1,20 +1,14 @@
 // PNG and PDF through cairo: the Scene's polylines, discs and text, with
 // cairo's anti-aliasing. Curves were flattened by layout(): no cairo curve
-// primitive is used. Files are written to a temporary name in the target's
-// folder and renamed when cairo reports success.
+// primitive is used. cairo writes into memory (a stream callback), never to a
+// file: files are written by write.cpp through io/file's one atomic writer.
 #include <cairo-pdf.h>
 #include <cairo.h>
-#include <fmt/format.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
-#include <cctype>
-#include <cstring>
 #include <numbers>
-#include <system_error>
+#include <string>
+#include <utility>
 #include <variant>
 
 #include "casteljau/render/write.hpp"
@@ -94,82 +88,56 @@ void paint(cairo_t* cr, const Scene& scene) {
   for (const auto& shape : scene.shapes) std::visit(Painter{cr}, shape);
 }
 
-/// A fresh temporary file next to `path` (same file system, so rename is atomic).
-Expected<std::filesystem::path> temporary_beside(const std::filesystem::path& path) {
-  const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::string name = (folder / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
-  const int fd = mkstemp(name.data());
-  if (fd < 0) return Error{fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno))};
-  // mkstemp creates the file private (0600); a figure is an ordinary file.
-  fchmod(fd, 0644);
-  close(fd);
-  return std::filesystem::path(name);
+/// cairo's write callback: appends to the std::string behind `closure`. No
+/// exception may cross cairo's C frames, so a failed allocation becomes
+/// cairo's own out-of-memory status.
+cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
+  try {
+    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+  } catch (...) {
+    return CAIRO_STATUS_NO_MEMORY;
+  }
 }
 
-Status commit(const std::filesystem::path& temporary, const std::filesystem::path& path, cairo_status_t status) {
-  if (status != CAIRO_STATUS_SUCCESS) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    return Error{fmt::format("cannot write '{}': {}", path.string(), cairo_status_to_string(status))};
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    return Error{fmt::format("cannot write '{}': {}", path.string(), error.message())};
-  }
-  return {};
+/// The bytes, or cairo's reason ("out of memory", "invalid size") as the error.
+Expected<std::string> finished(std::string bytes, cairo_status_t status) {
+  if (status != CAIRO_STATUS_SUCCESS) return Error{cairo_status_to_string(status)};
+  return bytes;
 }
 
 }  // namespace
 
-Status write_png(const Figure& figure, const std::filesystem::path& path, Progress progress) {
-  auto scene = layout(figure, progress);
-  if (!scene) return scene.error();
-  auto temporary = temporary_beside(path);
-  if (!temporary) return temporary.error();
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, figure.width, figure.height);
+Expected<std::string> png_document(const Scene& scene) {
+  std::string bytes;
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, static_cast<int>(std::lround(scene.width)),
+                                                        static_cast<int>(std::lround(scene.height)));
   cairo_t* cr = cairo_create(surface);
-  paint(cr, *scene);
+  paint(cr, scene);
   cairo_status_t status = cairo_status(cr);
   cairo_destroy(cr);
-  if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_write_to_png(surface, temporary->c_str());
+  if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_write_to_png_stream(surface, append_to_string, &bytes);
   cairo_surface_destroy(surface);
-  return commit(*temporary, path, status);
+  return finished(std::move(bytes), status);
 }
 
-Status write_pdf(const Figure& figure, const std::filesystem::path& path, Progress progress) {
-  auto scene = layout(figure, progress);
-  if (!scene) return scene.error();
-  auto temporary = temporary_beside(path);
-  if (!temporary) return temporary.error();
+Expected<std::string> pdf_document(const Scene& scene) {
+  std::string bytes;
   constexpr double kPointsPerPixel = 0.75;  // 96 dpi: CSS pixels in PDF points
-  cairo_surface_t* surface = cairo_pdf_surface_create(temporary->c_str(), figure.width * kPointsPerPixel,
-                                                      figure.height * kPointsPerPixel);
-  if (!scene->title.empty()) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, scene->title.c_str());
+  cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(append_to_string, &bytes,
+                                                                 scene.width * kPointsPerPixel,
+                                                                 scene.height * kPointsPerPixel);
+  if (!scene.title.empty()) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, scene.title.c_str());
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "casteljau");
   cairo_t* cr = cairo_create(surface);
   cairo_scale(cr, kPointsPerPixel, kPointsPerPixel);
-  paint(cr, *scene);
+  paint(cr, scene);
   cairo_status_t status = cairo_status(cr);
   cairo_destroy(cr);
-  cairo_surface_finish(surface);
+  cairo_surface_finish(surface);  // writes the rest of the document through the callback
   if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
   cairo_surface_destroy(surface);
-  return commit(*temporary, path, status);
-}
-
-Status write_figure(const Figure& figure, const std::filesystem::path& path, Progress progress) {
-  std::string extension = path.extension().string();
-  for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".svg") return write_svg(figure, path, progress);
-  if (extension == ".png") return write_png(figure, path, progress);
-  if (extension == ".pdf") return write_pdf(figure, path, progress);
-  if (extension.empty())
-    return Error{fmt::format("cannot write '{}': the file name has no extension (use .svg, .png or .pdf)", path.string())};
-  return Error{fmt::format("cannot write '{}': unknown figure format '{}' (use .svg, .png or .pdf)", path.string(),
-                           extension)};
+  return finished(std::move(bytes), status);
 }
 
 }  // namespace casteljau::render

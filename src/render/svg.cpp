@@ -7,7 +7,6 @@
 #include <variant>
 
 #include "markup.hpp"
-#include "casteljau/io/file.hpp"
 #include "casteljau/render/write.hpp"
 
 namespace casteljau::render {
@@ -127,11 +126,5 @@ class SvgWriter {
 }  // namespace
 
 std::string svg_document(const Scene& scene) { return SvgWriter{}.document(scene); }
-
-Status write_svg(const Figure& figure, const std::filesystem::path& path, Progress progress) {
-  auto scene = layout(figure, progress);
-  if (!scene) return scene.error();
-  return write_file_atomically(path, svg_document(*scene));
-}
 
 }  // namespace casteljau::render

@@ -65,7 +65,7 @@ png_width=$(od -An -tu1 -j16 -N4 "$work/patch.png" | awk '{print $1*16777216 + $
 if [[ $png_width -le 900 ]]; then echo "FAIL: PNG width $png_width, expected the two-panel figure"; failures=$((failures + 1)); fi
 
 # --- bad input ------------------------------------------------------------------
-expect_error "--view without a comma" "--view '30': expected azimuth,elevation in degrees" \
+expect_error "--view without a comma" "--view: '30' is not a pair azimuth,elevation in degrees" \
   plot "$work/patch.json" -o "$work/bad1.svg" --view 30
 no_file "--view 30" "$work/bad1.svg"
 expect_error "elevation beyond 90" "--view: elevation 100 is not in [-90, 90]" \

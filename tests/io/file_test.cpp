@@ -1,15 +1,20 @@
 // Files in and out (io/file.hpp): reading whole files with clear errors and
-// the size limit; atomic writing that never leaves a half-written file.
+// the size limit; atomic writing that never leaves a half-written file, and
+// never replaces a FIFO or a device by a regular file; symbolic links
+// followed to their target; file identity; extensions.
 #include "casteljau/io/file.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <string>
+#include <thread>
 
 #include "io_test_support.hpp"
 
@@ -124,6 +129,145 @@ TEST(WriteFileAtomically, AFailedWriteLeavesTheOldFileWhole) {
   EXPECT_EQ(status.error().message, "cannot write '" + out.string() + "': File too large");
   EXPECT_EQ(test::read_text(out), "the old contents\n");
   EXPECT_EQ(entries_in(folder.path()), 1u);
+}
+
+
+/// What a FIFO's reader received, read on its own thread while the writer
+/// writes (opening a FIFO for writing waits for its reader).
+class FifoReader {
+ public:
+  explicit FifoReader(const fs::path& fifo) : thread_([this, fifo] { received_ = test::read_text(fifo); }) {}
+  std::string received() {
+    thread_.join();
+    return received_;
+  }
+
+ private:
+  std::string received_;
+  std::thread thread_;
+};
+
+/// Whether the file opens for writing (a device node on a nodev mount does not).
+bool opens_for_writing(const fs::path& path) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  ::close(fd);
+  return true;
+}
+
+bool names_a_fifo(const fs::path& path) {
+  struct stat info {};
+  return ::lstat(path.c_str(), &info) == 0 && S_ISFIFO(info.st_mode);
+}
+
+TEST(WriteFileAtomically, WritesAFifoInPlace) {
+  // Issue 15: `-o n` on a FIFO replaced it by a regular file.
+  test::TemporaryFolder folder;
+  const fs::path fifo = folder / "n";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  FifoReader reader(fifo);
+  ASSERT_TRUE(write_file_atomically(fifo, "2.25,1.5\n").has_value());
+  EXPECT_EQ(reader.received(), "2.25,1.5\n");
+  EXPECT_TRUE(names_a_fifo(fifo));
+  EXPECT_EQ(entries_in(folder.path()), 1u);  // no temporary file beside it
+}
+
+TEST(WriteFileAtomically, WritesACharacterDeviceInPlace) {
+  // As root, a writer that renames would replace the system's /dev/null:
+  // then the test makes a null device of its own (a user cannot replace
+  // /dev/null, the rename would only fail).
+  test::TemporaryFolder folder;
+  fs::path device = "/dev/null";
+  if (::geteuid() == 0 && ::mknod((folder / "null").c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0 &&
+      opens_for_writing(folder / "null")) {
+    device = folder / "null";
+  }
+  ASSERT_TRUE(write_file_atomically(device, "x").has_value());
+  struct stat info {};
+  ASSERT_EQ(::lstat(device.c_str(), &info), 0);
+  EXPECT_TRUE(S_ISCHR(info.st_mode));
+}
+
+TEST(WriteFileAtomically, ALinkToAFifoWritesTheFifoAndKeepsTheLink) {
+  test::TemporaryFolder folder;
+  ASSERT_EQ(::mkfifo((folder / "n").c_str(), 0600), 0);
+  fs::create_symlink("n", folder / "link");
+  FifoReader reader(folder / "n");
+  ASSERT_TRUE(write_file_atomically(folder / "link", "through the link").has_value());
+  EXPECT_EQ(reader.received(), "through the link");
+  EXPECT_TRUE(fs::is_symlink(folder / "link"));
+  EXPECT_TRUE(names_a_fifo(folder / "n"));
+}
+
+TEST(WriteFileAtomically, ADanglingLinkCreatesItsTargetAndStays) {
+  test::TemporaryFolder folder;
+  fs::create_directory(folder / "sub");
+  fs::create_symlink("../made.csv", folder / "sub" / "link");  // relative to the link's folder
+  ASSERT_TRUE(write_file_atomically(folder / "sub" / "link", "new").has_value());
+  EXPECT_TRUE(fs::is_symlink(folder / "sub" / "link"));
+  EXPECT_EQ(test::read_text(folder / "made.csv"), "new");
+  EXPECT_EQ(entries_in(folder / "sub"), 1u);
+}
+
+TEST(WriteFileAtomically, FollowsAChainOfLinksAndRefusesALoop) {
+  test::TemporaryFolder folder;
+  test::write_text(folder / "target", "old");
+  fs::create_symlink("target", folder / "one");
+  fs::create_symlink(folder / "one", folder / "two");  // absolute
+  ASSERT_TRUE(write_file_atomically(folder / "two", "new").has_value());
+  EXPECT_EQ(test::read_text(folder / "target"), "new");
+  EXPECT_TRUE(fs::is_symlink(folder / "one"));
+  EXPECT_TRUE(fs::is_symlink(folder / "two"));
+
+  fs::create_symlink("loop_b", folder / "loop_a");
+  fs::create_symlink("loop_a", folder / "loop_b");
+  EXPECT_EQ(write_file_atomically(folder / "loop_a", "x").error().message,
+            "cannot write '" + (folder / "loop_a").string() + "': Too many levels of symbolic links");
+  EXPECT_TRUE(fs::is_symlink(folder / "loop_a"));
+}
+
+TEST(WriteFileAtomically, RefusesAnEmptyName) {
+  EXPECT_EQ(write_file_atomically("", "x").error().message, "cannot write '': the file name is empty");
+}
+
+TEST(WriteFileAtomically, TakesNamesUpToTheSystemLimit) {
+  // The temporary name must fit in NAME_MAX (255 bytes) too.
+  test::TemporaryFolder folder;
+  const std::string name(255, 'n');
+  ASSERT_TRUE(write_file_atomically(folder / name, "x").has_value());
+  EXPECT_EQ(test::read_text(folder / name), "x");
+  EXPECT_EQ(entries_in(folder.path()), 1u);
+}
+
+TEST(SameRegularFile, MatchesEverySpellingOfOneFile) {
+  test::TemporaryFolder folder;
+  test::write_text(folder / "m.json", "{}");
+  test::write_text(folder / "other.json", "{}");
+  fs::create_directory(folder / "sub");
+  fs::create_symlink("../m.json", folder / "sub" / "link");
+  fs::create_hard_link(folder / "m.json", folder / "hard.json");
+  const fs::path m = folder / "m.json";
+  EXPECT_TRUE(same_regular_file(m, m));
+  EXPECT_TRUE(same_regular_file(m, folder / "." / "m.json"));
+  EXPECT_TRUE(same_regular_file(m, folder / "sub" / ".." / "m.json"));
+  EXPECT_TRUE(same_regular_file(m, folder / "sub" / "link"));
+  EXPECT_TRUE(same_regular_file(folder / "hard.json", m));
+  EXPECT_FALSE(same_regular_file(m, folder / "other.json"));
+  EXPECT_FALSE(same_regular_file(m, folder / "missing.json"));
+  EXPECT_FALSE(same_regular_file(folder / "missing.json", folder / "missing.json"));
+  EXPECT_FALSE(same_regular_file(folder / "sub", folder / "sub"));
+  EXPECT_FALSE(same_regular_file("/dev/null", "/dev/null"));
+  ASSERT_EQ(::mkfifo((folder / "n").c_str(), 0600), 0);
+  EXPECT_FALSE(same_regular_file(folder / "n", folder / "n"));
+}
+
+TEST(LowercaseExtension, IsTheLastExtensionOfTheFileName) {
+  EXPECT_EQ(lowercase_extension("out/Figure.PNG"), ".png");
+  EXPECT_EQ(lowercase_extension("m.json.GZ"), ".gz");
+  EXPECT_EQ(lowercase_extension("dir.d/Makefile"), "");
+  EXPECT_EQ(lowercase_extension(".bashrc"), "");
+  EXPECT_EQ(lowercase_extension("-"), "");
+  EXPECT_EQ(lowercase_extension("a."), ".");
 }
 
 }  // namespace

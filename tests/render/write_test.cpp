@@ -1,14 +1,18 @@
 // Writers: PNG and PDF files start with their magic bytes, PNGs read back by
 // cairo have the figure's pixel size, PDFs the page size in points, bad
-// extensions and missing folders are errors that leave no file behind.
+// extensions and missing folders are errors that leave no file behind. Every
+// format goes through io/file's writer: the umask and an existing file's
+// permissions are kept, a symbolic link stays, a FIFO stays a FIFO.
 #include <cairo/cairo.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <thread>
 
 #include "casteljau/render/plots.hpp"
 #include "casteljau/render/write.hpp"
@@ -120,6 +124,65 @@ TEST_F(WriteTest, LayoutErrorsWriteNothing) {
   Figure empty;  // no panel
   for (const char* name : {"a.svg", "a.png", "a.pdf"}) EXPECT_FALSE(write_figure(empty, dir_ / name));
   EXPECT_EQ(files_in_dir(), 0u);
+}
+
+
+TEST(FigureDocument, EncodesEveryFormatInMemory) {
+  const Figure figure = small_figure(320, 240);
+  EXPECT_EQ(figure_document(figure, FigureFormat::svg)->substr(0, 5), "<?xml");
+  EXPECT_EQ(figure_document(figure, FigureFormat::png)->substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(figure_document(figure, FigureFormat::pdf)->substr(0, 5), "%PDF-");
+  EXPECT_FALSE(figure_document(Figure{}, FigureFormat::png));  // layout error: no panel
+}
+
+TEST(FigureFormatOf, ComesFromTheExtensionInAnyCase) {
+  EXPECT_EQ(*figure_format_of("a/b.SVG"), FigureFormat::svg);
+  EXPECT_EQ(*figure_format_of("b.Png"), FigureFormat::png);
+  EXPECT_EQ(*figure_format_of("b.pdf"), FigureFormat::pdf);
+  EXPECT_EQ(figure_format_of("f.gif").error().message,
+            "cannot write 'f.gif': unknown figure format '.gif' (use .svg, .png or .pdf)");
+  EXPECT_EQ(figure_format_of("f").error().message,
+            "cannot write 'f': the file name has no extension (use .svg, .png or .pdf)");
+}
+
+TEST_F(WriteTest, EveryFormatTakesTheUmaskAndKeepsExistingPermissions) {
+  // cairo.cpp had its own writer that made every figure 0644.
+  const mode_t old_mask = ::umask(077);
+  for (const char* name : {"new.svg", "new.png", "new.pdf"}) {
+    ASSERT_TRUE(write_figure(small_figure(100, 80), dir_ / name)) << name;
+    struct stat info {};
+    ASSERT_EQ(::stat((dir_ / name).c_str(), &info), 0);
+    EXPECT_EQ(info.st_mode & 0777, 0600u) << name;
+  }
+  ::umask(old_mask);
+  { std::ofstream(dir_ / "kept.png") << "old"; }
+  ::chmod((dir_ / "kept.png").c_str(), 0640);
+  ASSERT_TRUE(write_png(small_figure(100, 80), dir_ / "kept.png"));
+  struct stat info {};
+  ASSERT_EQ(::stat((dir_ / "kept.png").c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 0777, 0640u);
+}
+
+TEST_F(WriteTest, ALinkStaysAndItsTargetIsReplaced) {
+  // cairo.cpp renamed over the link itself.
+  { std::ofstream(dir_ / "target.pdf") << "old"; }
+  fs::create_symlink("target.pdf", dir_ / "link.pdf");
+  ASSERT_TRUE(write_figure(small_figure(100, 80), dir_ / "link.pdf"));
+  EXPECT_TRUE(fs::is_symlink(dir_ / "link.pdf"));
+  EXPECT_EQ(file_text(dir_ / "target.pdf").substr(0, 5), "%PDF-");
+  EXPECT_EQ(files_in_dir(), 2u);
+}
+
+TEST_F(WriteTest, AFifoStaysAFifo) {
+  const fs::path fifo = dir_ / "figure.png";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string received;
+  std::thread reader([&] { received = file_text(fifo); });
+  const auto status = write_figure(small_figure(100, 80), fifo);
+  reader.join();
+  ASSERT_TRUE(status);
+  EXPECT_EQ(received.substr(1, 3), "PNG");
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
 }
 
 }  // namespace

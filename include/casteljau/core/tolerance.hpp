@@ -217,6 +217,12 @@ inline constexpr int kMaxNaturalSplineOrder = 8;
 /// before a byte is read.
 inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{1} << 30;
 
+/// Most symbolic links followed from an output path to the file it names
+/// (write_file_atomically replaces the link's target, not the link). 40 is
+/// Linux's own limit (MAXSYMLINKS): past it the kernel answers ELOOP, and so
+/// do we, for a link chain or a loop. A count of links, no unit.
+inline constexpr int kMaxSymbolicLinks = 40;
+
 // --- Tessellation and meshes (helper C: ops/tessellate.hpp, ops/mesh.hpp) ----
 
 /// Smallest tessellation tolerance accepted, in ulps (2^-52) of the patches'
