@@ -16,6 +16,7 @@
 #include "casteljau/surfaces/control_net.hpp"
 #include "casteljau/surfaces/coons.hpp"
 #include "casteljau/surfaces/evaluate.hpp"
+#include "casteljau/surfaces/revolution.hpp"
 #include "support/extreme_doubles.hpp"
 
 namespace casteljau {
@@ -125,6 +126,32 @@ RC_GTEST_PROP(ExtremeDoubles, CoonsPatchOfValidBoundariesEvaluatesFinitely, ()) 
   if (!patch) return expect_message(patch);
   const std::vector<double> ts{0.0, 1.0, 0.5, 5e-324, 0.25, std::nextafter(1.0, 0.0)};
   expect_finite(*patch, ts, ts);
+}
+
+/// The sphere and the torus (surfaces of revolution of conics): centre,
+/// axis and radii at the edges.
+RC_GTEST_PROP(ExtremeDoubles, SphereAndTorusRefuseOrEvaluateFinitely, ()) {
+  const std::vector<double> center{*test::mixed_double(2), *test::mixed_double(2), *test::mixed_double(2)};
+  const std::vector<double> axis{*test::mixed_double(2), *test::mixed_double(2), *test::mixed_double(2)};
+  const auto radius = [] {
+    return *rc::gen::weightedOneOf<double>(
+        {{1, test::edge_double()}, {1, rc::gen::map(rc::gen::inRange(1, 64), [](int i) { return i / 8.0; })}});
+  };
+  const double major = radius(), minor = radius();
+  const std::vector<double> ts{0.0, 1.0, 0.5, 0.25, std::nextafter(1.0, 0.0)};
+  for (const auto& surface : {make_sphere(center, major), make_torus(center, axis, major, minor)}) {
+    if (!surface) {
+      expect_message(surface);
+      continue;
+    }
+    const Interval du = surface->domain_u(), dv = surface->domain_v();
+    std::vector<double> us, vs;
+    for (double t : ts) {
+      us.push_back(du.lower + t * (du.upper - du.lower));
+      vs.push_back(dv.lower + t * (dv.upper - dv.lower));
+    }
+    expect_finite(*surface, us, vs);
+  }
 }
 
 }  // namespace
