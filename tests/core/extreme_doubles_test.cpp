@@ -158,7 +158,8 @@ RC_GTEST_PROP(ExtremeDoubles, PeriodicMakeRefusesOrEvaluatesFinitely, ()) {
   expect_finite(*curve);
 }
 
-/// Conics: centre, radius (or semi-axes) and angles at the edges.
+/// Conics: centre, radius (or semi-axes) and angles at the edges, in the
+/// plane and in a frame of R^3.
 RC_GTEST_PROP(ExtremeDoubles, ConicsRefuseOrEvaluateFinitely, ()) {
   const double cx = *test::mixed_double(4), cy = *test::mixed_double(4);
   const double r = *rc::gen::weightedOneOf<double>(
@@ -168,7 +169,9 @@ RC_GTEST_PROP(ExtremeDoubles, ConicsRefuseOrEvaluateFinitely, ()) {
   const double sweep = *rc::gen::weightedOneOf<double>(
       {{2, rc::gen::map(rc::gen::inRange(-8, 9), [](int i) { return i * std::numbers::pi / 4; })},
        {1, test::edge_double()}});
-  for (const auto& curve : {make_arc(cx, cy, r, start, sweep), make_circle(cx, cy, r), make_ellipse(cx, cy, r, b)}) {
+  const ConicFrame frame{{cx, cy, *test::mixed_double(4)}, {0, 0, 1}, {1, 0, 0}};  // a plane of R^3
+  for (const auto& curve : {make_arc(cx, cy, r, start, sweep), make_circle(cx, cy, r), make_ellipse(cx, cy, r, b),
+                            make_arc(frame, r, start, sweep)}) {
     if (!curve) {
       expect_message(curve);
       continue;
