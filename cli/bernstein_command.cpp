@@ -9,6 +9,7 @@
 #include "casteljau/render/plots.hpp"
 #include "casteljau/render/write.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 
 namespace casteljau::cli {
 namespace {
@@ -24,8 +25,12 @@ int run_bernstein(const BernsteinOptions& options) {
   if (!n) return fail(n.error());
   auto figure = render::bernstein_basis_figure(static_cast<int>(*n), options.without_ends);
   if (!figure) return fail(figure.error());
-  if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
-  return 0;
+  Status written;
+  {  // the progress line is erased before any message
+    TerminalProgress progress("bernstein");
+    written = render::write_figure(*figure, options.output, progress.callback());
+  }
+  return written ? 0 : fail(written.error());
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 
 namespace casteljau::cli {
 namespace {
@@ -112,15 +113,19 @@ Expected<BSplineFit> compute_fit(const FitRequest& request, const FitOptions& op
   auto parameters = options.function ? function_parameters(points) : parameter_values(points, request.kind);
   if (!parameters) return in_file(options, parameters.error());
   Expected<BSplineFit> fit = Error{};
+  // GCV over 10⁶ points or a tolerance near the noise takes seconds: say how far
+  // it is (on a terminal's stderr, erased before anything else is printed).
+  TerminalProgress progress("fit");
   if (request.smoothing) {
     SmoothingOptions smoothing;
     smoothing.degree = request.degree;
     smoothing.control_point_count = request.control_points;
     smoothing.smoothing = request.lambda;
     smoothing.ends = request.ends;
-    fit = fit_smoothing(points, *parameters, smoothing);
+    fit = fit_smoothing(points, *parameters, smoothing, progress.callback());
   } else if (request.tolerance) {
-    fit = fit_to_tolerance(points, *parameters, request.degree, Tolerance{*request.tolerance}, request.ends);
+    fit = fit_to_tolerance(points, *parameters, request.degree, Tolerance{*request.tolerance}, request.ends,
+                           progress.callback());
   } else {
     fit = fit_least_squares(points, *parameters, request.degree, request.control_points, request.ends);
   }
@@ -145,6 +150,12 @@ int run_fit(const FitOptions& options) {
   if (!request) return fail(request.error());
   auto points = read_points_csv(options.points);
   if (!points) return fail(points.error());
+  // One column would give a curve on a line, never what a point set means
+  // (with --function the library says what a function y(x) needs).
+  if (points->dimension() < 2 && !options.function) {
+    return fail(fmt::format("{}: fit approximates points of 2 or more columns (x,y or x,y,z), got 1 column",
+                            display_name(options.points)));
+  }
   auto fit = compute_fit(*request, options, *points);
   if (!fit) return fail(fit.error());
   const std::string text = models_to_json({Model{fit->curve}});
@@ -169,7 +180,7 @@ void add_fit_command(CLI::App& app, int& status) {
       "make_smoothing_spline). The curve runs over [t_0, t_m] (the parameters, normalized to [0, 1] unless "
       "--function). A summary line (control points, max and rms error, lambda, GCV score, effective degrees of "
       "freedom) goes to standard output with -o, else to standard error.");
-  command->add_option("POINTS", options->points, "CSV point set (x,y or x,y,z, any dimension)")->required();
+  command->add_option("POINTS", options->points, "CSV point set of 2 or more columns (x,y or x,y,z)")->required();
   command->add_option("--degree", options->degree, "The degree p >= 1 (2 or more with --smoothing)")
       ->type_name("P")
       ->required();

@@ -137,6 +137,25 @@ Status check_options(const MethodRules& rules, const InterpolateOptions& options
   return {};
 }
 
+/// What the method reads from each row, checked before anything else: a
+/// point of a plane or space curve (2 columns or more: one column alone would
+/// give a curve on a line, never what a point set means), or for hermite a
+/// point followed by its tangent (2d columns, d >= 2). With --function the
+/// library says what a function y(x) needs (function_parameters).
+Status check_columns(const MethodRules& rules, const InterpolateOptions& options, const PointArray& points) {
+  const int columns = points.dimension();
+  const std::string file = display_name(options.points);
+  if (rules.method == Method::hermite) {
+    if (columns >= 4 && columns % 2 == 0) return {};
+    return Error{fmt::format("{}: hermite reads points and tangents: 2d columns (x,y,dx,dy in 2D, x,y,z,dx,dy,dz "
+                             "in 3D), got {} column{}",
+                             file, columns, columns == 1 ? "" : "s")};
+  }
+  if (options.function || columns >= 2) return {};
+  return Error{fmt::format("{}: {} interpolates points of 2 or more columns (x,y or x,y,z), got 1 column", file,
+                           rules.name)};
+}
+
 /// The parameter values t_0..t_m (t_{m+1} for the closing step of a closed
 /// curve): x with --function, else --param (uniform when not given).
 Expected<std::vector<double>> parameters_of(const PointArray& points, const InterpolateOptions& options,
@@ -295,11 +314,6 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
       return Model{std::move(*curve)};
     }
     case Method::hermite: {
-      if (points.dimension() % 2 != 0) {
-        return in_file(options, Error{fmt::format("hermite needs 2d columns (the point, then its tangent: x,y,dx,dy), "
-                                                  "got {}",
-                                                  points.dimension())});
-      }
       const int d = points.dimension() / 2;
       std::vector<double> positions, tangents;
       for (std::size_t i = 0; i < points.size(); ++i) {
@@ -329,6 +343,7 @@ int run_interpolate(const InterpolateOptions& options) {
   if (auto ok = check_options(*rules, options); !ok) return fail(ok.error());
   auto points = read_points_csv(options.points);
   if (!points) return fail(points.error());
+  if (auto ok = check_columns(*rules, options, *points); !ok) return fail(ok.error());
   auto model = build_model(*rules, options, std::move(*points));
   if (!model) return fail(model.error());
   const std::string text = models_to_json({*model});

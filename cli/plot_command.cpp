@@ -15,6 +15,7 @@
 #include "casteljau/render/surface_plots.hpp"
 #include "casteljau/render/write.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 
 namespace casteljau::cli {
 namespace {
@@ -29,6 +30,8 @@ struct PlotCommandOptions {
   bool basis = false;
   bool tangents = false;
   bool points_only = false;
+  bool data_points = false;
+  bool data_polyline = false;
   std::string view;
   int iso_curves = 11;
 };
@@ -39,14 +42,22 @@ std::string lowercase_extension(const std::string& path) {
   return extension;
 }
 
-/// A file as a plot source: .json is model JSON; .csv a point set, the
-/// control polygon of one Bézier curve (as for eval) unless --points-only.
-Expected<render::PlotSource> read_source(const std::string& path, bool points_only) {
+/// How a CSV point set is drawn: as the control polygon of one Bézier curve
+/// (as for eval, the default), or as data: its points, the polyline through
+/// them, or both.
+struct CsvStyle {
+  bool data_points = false;
+  bool data_polyline = false;
+  bool as_data() const { return data_points || data_polyline; }
+};
+
+/// A file as a plot source: .json is model JSON; .csv a point set, drawn as
+/// `csv` says.
+Expected<render::PlotSource> read_source(const std::string& path, const CsvStyle& csv) {
   const std::string extension = lowercase_extension(path);
   render::PlotSource source;
   source.name = std::filesystem::path(path).filename().string();
   if (extension == ".json") {
-    if (points_only) return Error{fmt::format("--points-only applies to CSV point sets, '{}' is model JSON", path)};
     auto models = read_models_json(path);
     if (!models) return models.error();
     source.models = std::move(*models);
@@ -55,8 +66,10 @@ Expected<render::PlotSource> read_source(const std::string& path, bool points_on
   if (extension == ".csv") {
     auto points = read_points_csv(path);
     if (!points) return points.error();
-    if (points_only) {
+    if (csv.as_data()) {
       source.points = std::move(*points);
+      source.markers = csv.data_points;
+      source.polyline = csv.data_polyline;
       return source;
     }
     auto curve = BezierCurve::make(std::move(*points));
@@ -66,6 +79,17 @@ Expected<render::PlotSource> read_source(const std::string& path, bool points_on
   }
   return Error{fmt::format("cannot plot '{}': unknown input format '{}' (use model JSON .json or a CSV point set .csv)",
                            path, extension.empty() ? "no extension" : extension)};
+}
+
+/// Writes the figure, with a progress line while its curves are flattened
+/// (erased before any message).
+int write_plot(const render::Figure& figure, const std::string& path) {
+  Status written;
+  {
+    TerminalProgress progress("plot");
+    written = render::write_figure(figure, path, progress.callback());
+  }
+  return written ? 0 : fail(written.error());
 }
 
 int run_plot(const PlotCommandOptions& options) {
@@ -86,9 +110,11 @@ int run_plot(const PlotCommandOptions& options) {
   if (extension != ".svg" && extension != ".png" && extension != ".pdf")
     return fail(fmt::format("cannot write '{}': unknown figure format '{}' (use .svg, .png or .pdf)", options.output,
                             extension.empty() ? "no extension" : extension));
+  // --points-only is the older name of --data-points.
+  const CsvStyle csv{options.data_points || options.points_only, options.data_polyline};
   std::vector<render::PlotSource> sources;
   for (const auto& path : options.inputs) {
-    auto source = read_source(path, options.points_only);
+    auto source = read_source(path, csv);
     if (!source) return fail(source.error());
     sources.push_back(std::move(*source));
   }
@@ -122,13 +148,11 @@ int run_plot(const PlotCommandOptions& options) {
     }
     auto figure = render::surface_plot_figure(sources, surface, extension != ".svg");
     if (!figure) return fail(figure.error());
-    if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
-    return 0;
+    return write_plot(*figure, options.output);
   }
   auto figure = render::plot_figure(sources, plot);
   if (!figure) return fail(figure.error());
-  if (auto ok = render::write_figure(*figure, options.output); !ok) return fail(ok.error());
-  return 0;
+  return write_plot(*figure, options.output);
 }
 
 }  // namespace
@@ -139,7 +163,8 @@ void add_plot_command(CLI::App& app, int& status) {
       "plot",
       "Draws curves and point sets into an SVG, PNG or PDF figure (chosen by the extension of -o). Every curve is "
       "drawn as a polyline within a quarter pixel of it (casteljau's own flattening). A CSV point set is the control "
-      "polygon of one Bézier curve (as for eval) unless --points-only; 3D curves are projected on the x, y plane. "
+      "polygon of one Bézier curve (as for eval) unless --data-points or --data-polyline draw it as data beside the "
+      "curves (diamonds; control points are red discs); 3D curves are projected on the x, y plane. "
       "Surfaces (drawn apart from curves) are seen in an orthographic view (--view; surfaces in R^2 in their "
       "plane): their iso-curves, with --control-polygon their control nets, with --points their control points; "
       "PNG and PDF add a panel with the surfaces tessellated and shaded (Lambert, painter's algorithm).");
@@ -149,14 +174,19 @@ void add_plot_command(CLI::App& app, int& status) {
       ->type_name("FILE")
       ->required();
   plot->add_flag("--control-polygon", options->control_polygon, "Draw each control polygon (dashed gray)");
-  plot->add_flag("--points", options->points, "Draw the control points (red dots)");
+  plot->add_flag("--points", options->points, "Draw the control points (red discs)");
   plot->add_option("--construction", options->construction,
                    "Draw the de Casteljau construction at parameter T (global parameter of a piecewise curve)")
       ->type_name("T");
   plot->add_flag("--comb", options->comb, "Draw the curvature comb (teeth along the normal, length ~ curvature)");
   plot->add_flag("--basis", options->basis, "Add a panel with the basis of the first curve: Bernstein of its degree, or the B-spline basis of its knots for a bspline model");
   plot->add_flag("--tangents", options->tangents, "Draw the end tangents along the first and last legs (blue)");
-  plot->add_flag("--points-only", options->points_only, "Draw CSV point sets as points only, not as a curve");
+  plot->add_flag("--data-points", options->data_points,
+                 "Draw CSV point sets as data points (diamonds, named in the legend beside curves), not as the control "
+                 "polygon of a curve; works beside model JSON");
+  plot->add_flag("--data-polyline", options->data_polyline,
+                 "Draw CSV point sets as the polyline through their points (with --data-points, and the points)");
+  plot->add_flag("--points-only", options->points_only, "The older name of --data-points");
   plot->add_option("--view", options->view,
                    "Surfaces: the direction they are seen from, azimuth,elevation in degrees (matplotlib's view_init; "
                    "default -60,30), an orthographic projection")

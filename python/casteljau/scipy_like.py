@@ -19,7 +19,9 @@ What differs from scipy, everywhere:
 - real data only: complex arrays raise TypeError; NaN or infinite knots,
   coefficients or data raise ValueError (scipy accepts NaN coefficients);
 - knots of multiplicity above k+1 raise ValueError (casteljau's B-splines
-  require multiplicity <= k+1);
+  require multiplicity <= k+1), except k = 0 with the last knot repeated,
+  as make_interp_spline(k=0) makes it (the empty last span holds the value at
+  and beyond t[n], as in scipy);
 - a spline's ``c`` holds exactly ``len(t) - k - 1`` coefficients (scipy's
   derivative/antiderivative pad ``c`` with zeros up to ``len(t)``);
 - evaluation at NaN or infinite x gives NaN;
@@ -86,6 +88,24 @@ def _check_x(x, count=None, what="x"):
     if count is not None and x.size != count:
         raise ValueError(f"shapes of {what} {x.shape} and y ({count}, ...) are incompatible")
     return np.ascontiguousarray(x)
+
+
+def _compiled_knots(t, k):
+    """The knots of the compiled curve for scipy's knots t: t itself, except for k = 0 with the last knot
+    repeated (make_interp_spline's k = 0 knots x, x[-1]). There scipy's last coefficient belongs to the empty
+    span [t[n-1], t[n]], which its evaluation uses from t[n] on; casteljau's curves have no empty spans of degree
+    0 (multiplicity <= k + 1), so that span is widened to the right, to t[n] plus the previous step (or the next
+    double up where that overflows): the same value at and beyond t[n], the base interval still [t[0], t[n]]."""
+    if k != 0 or len(t) < 2 or t[-1] != t[-2]:
+        return t
+    end = float(t[-1])
+    step = end - float(t[-3]) if len(t) >= 3 else 0.0
+    if not (np.isfinite(step) and step > 0.0):
+        step = max(abs(end), 1.0)
+    beyond = end + step
+    if not np.isfinite(beyond) or beyond <= end:
+        beyond = float(np.nextafter(end, np.inf))
+    return np.r_[t[:-1], beyond]
 
 
 class BSpline:
@@ -166,7 +186,7 @@ class BSpline:
             return cache[3]
         n = len(t) - k - 1
         points = np.ascontiguousarray(np.asarray(c, dtype=np.float64)[:n].reshape(n, -1))
-        curve = _c.BSplineCurve(k, t, points)
+        curve = _c.BSplineCurve(k, _compiled_knots(t, k), points)
         self._curve_cache = (t, c, k, curve)
         return curve
 
@@ -208,9 +228,10 @@ class BSpline:
         shape = x.shape
         xs = np.ascontiguousarray(x.reshape(-1))
         out = np.empty((xs.size, curve.dimension))
-        if extrapolate != "periodic":
+        if extrapolate != "periodic" and (extrapolate or curve.domain == self._base_interval()):
             # One compiled call when every x is finite (and inside, without
-            # extrapolation): the kernel checks them as it evaluates.
+            # extrapolation): the kernel checks them as it evaluates. (A k = 0
+            # spline's compiled domain can be wider than [t[k], t[n]].)
             try:
                 self._evaluate(curve, xs, nu, out, bool(extrapolate))
                 return out.reshape(shape + self.c.shape[1:])
@@ -411,14 +432,17 @@ def make_interp_spline(x, y, k=3, t=None, bc_type=None, axis=0):
     ends natural or both clamped, periodic) are built by interpolate_cubic (de Boor, A Practical Guide to Splines,
     ch. IV), everything else by interpolate_on_knots (collocation: The NURBS Book §9.2.1-9.2.2, de Boor ch. XIII).
     bc_type: None, 'not-a-knot', 'natural', 'clamped', 'periodic' (k = 3), or a pair (left, right), each None or a
-    list of (order, value) pairs with orders 1..k.
+    list of (order, value) pairs with orders 1..k. k = 0 is scipy's piecewise constant: knots x, x[-1],
+    coefficients y, the value y[i] on [x[i], x[i+1]) and y[-1] from x[-1] on (and y[0] before x[0]).
 
     Differs from scipy: even k >= 4 without t and bc_type (scipy refuses) gives the spline on The NURBS Book's
     averaged knots (eq. 9.8, interpolate_bspline); a t whose domain [t[k], t[n]] is wider than [x[0], x[-1]]
     raises ValueError (casteljau needs x[0] = t[k] and x[-1] = t[n]; scipy accepts x inside); a singular system
     (knots against the Schoenberg-Whitney condition, impossible derivative orders) raises ValueError naming the
     cause (scipy: LinAlgError); a scalar derivative value is broadcast over the shape of y[0] (scipy wants that
-    shape); 'periodic' only with k = 3 (scipy: any k); axis != 0.
+    shape); 'periodic' only with k = 3 (scipy: any k); axis != 0; for k = 0, integrate and antiderivative are
+    those of the step function (scipy 1.10's antiderivative drops to 0 at x[-1], its empty last span, so its
+    integrate(x[0], x[-1]) is 0) and the antiderivative's last knot lies one step past x[-1].
     """
     k = operator.index(k)
     if k < 0:

@@ -876,7 +876,8 @@ void bind_constructions(py::module_& module) {
         return unwrap(make_sphere(values_from(center, "center"), radius));
       },
       py::arg("center"), py::arg("radius"),
-      "The sphere |S - center| = radius as an exact NURBS surface of degree (2, 2), 9 x 5 control points, poles "
+      "The sphere |S - center| = radius (center a point of R^3, first as in every make_*) as an exact NURBS "
+      "surface of degree (2, 2), 9 x 5 control points, poles "
       "at v = 0 and v = 1, outward normals (a semicircle revolved, The NURBS Book §8.5).");
 
   module.def(

@@ -32,10 +32,13 @@ void split_rows(std::vector<double> rows, int n, int width, double t, std::vecto
     left[j] = rows[j];
     right[n * width + j] = rows[n * width + j];
   }
+  double* x = rows.data();
   for (int r = 1; r <= n; ++r) {
-    for (int i = 0; i <= n - r; ++i)
-      for (int j = 0; j < width; ++j)
-        rows[i * width + j] = detail::lerp_step(rows[i * width + j], rows[(i + 1) * width + j], s, t);
+    // Row i becomes (1-t) row i + t row i+1: one flat pass over the rows'
+    // coordinates (the same lerp_step per coordinate as point_at, so the same
+    // bits; flat, the compiler can vectorize it).
+    const int count = (n - r + 1) * width;
+    for (int m = 0; m < count; ++m) x[m] = detail::lerp_step(x[m], x[m + width], s, t);
     for (int j = 0; j < width; ++j) {
       left[r * width + j] = rows[j];
       right[(n - r) * width + j] = rows[(n - r) * width + j];
@@ -54,24 +57,21 @@ std::pair<BezierCurve, BezierCurve> split_at(const BezierCurve& curve, double t)
 }
 
 BezierCurve segment(const BezierCurve& curve, double t0, double t1) {
-  // Blossom values b(t0^(n-i), t1^i) are the control points of C on [t0, t1]
-  // (Ramshaw's blossoming; Farin §3.4): no division, any t0, t1.
+  // Two subdivisions (Farin §3.4): C on [0, t1] is the left side of the de
+  // Casteljau triangle at t1; that piece on [t0 / t1, 1] (its own parameter)
+  // is C on [t0, t1]. Pivoting on the end of larger magnitude keeps the ratio
+  // in [-1, 1]; a rational curve stays homogeneous between the two (the
+  // intermediate piece may reach weights <= 0 outside [0, 1]). O(n^2 d):
+  // each blossom value b(t0^(n-i), t1^i) on its own would cost O(n^3 d).
+  if (std::abs(t0) > std::abs(t1)) return reversed(segment(curve, t1, t0));
   const PointArray points = working_points(curve);
   const int width = points.dimension(), n = curve.degree();
-  std::vector<double> result(static_cast<std::size_t>(n + 1) * width);
-  std::vector<double> rows;
-  for (int i = 0; i <= n; ++i) {
-    rows.assign(points.coordinates().begin(), points.coordinates().end());
-    for (int r = 1; r <= n; ++r) {
-      const double t = (r <= n - i) ? t0 : t1;
-      const double s = 1.0 - t;
-      for (int k = 0; k <= n - r; ++k)
-        for (int j = 0; j < width; ++j)
-          rows[k * width + j] = detail::lerp_step(rows[k * width + j], rows[(k + 1) * width + j], s, t);
-    }
-    for (int j = 0; j < width; ++j) result[i * width + j] = rows[j];
-  }
-  return curve_from(curve, std::move(result), width);
+  std::vector<double> before, after;
+  split_rows({points.coordinates().begin(), points.coordinates().end()}, n, width, t1, before, after);
+  if (t1 == 0.0) return curve_from(curve, std::move(before), width);  // t0 = t1 = 0: the point C(0), n + 1 times
+  std::vector<double> outside, piece;
+  split_rows(std::move(before), n, width, t0 / t1, outside, piece);
+  return curve_from(curve, std::move(piece), width);
 }
 
 BezierCurve reversed(const BezierCurve& curve) {

@@ -5,6 +5,8 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "../core/number_text.hpp"
@@ -65,8 +67,7 @@ Status check_interpolation_input(const PointArray& points, std::span<const doubl
                                  std::size_t needed_points, const std::string& method) {
   const std::size_t m = points.size();
   if (m < needed_points) {
-    return Error{std::to_string(m) + (m == 1 ? " point, " : " points, ") + method + " needs at least " +
-                 std::to_string(needed_points)};
+    return Error{method + " needs at least " + std::to_string(needed_points) + " points, got " + std::to_string(m)};
   }
   if (parameters.size() != count) {
     return Error{std::to_string(parameters.size()) + " parameter values for " + std::to_string(m) + " points, " +
@@ -75,6 +76,51 @@ Status check_interpolation_input(const PointArray& points, std::span<const doubl
   if (auto increasing = check_increasing(parameters); !increasing) return increasing.error();
   if (auto finite = check_coordinates(points); !finite) return finite.error();
   return {};
+}
+
+std::optional<SiteGap> schoenberg_whitney_gap(std::span<const double> knots, int degree,
+                                              std::span<const std::size_t> columns, std::span<const double> sites,
+                                              std::span<const double> weights) {
+  assert(weights.empty() || weights.size() == sites.size());
+  const auto p = static_cast<std::size_t>(degree);
+  const auto counts = [&](std::size_t i) { return weights.empty() || weights[i] > 0.0; };
+  std::size_t usable = 0;
+  for (std::size_t i = 0; i < sites.size(); ++i) usable += counts(i) ? 1 : 0;
+  // As many sites as columns: each column must take the very next site.
+  const bool square = usable == columns.size();
+  const auto nonzero = [&](std::size_t j, double s) {
+    const double low = knots[j], high = knots[j + p + 1];
+    if (low < s && s < high) return true;
+    if (s < low || s > high) return false;
+    return basis_function(knots, degree, static_cast<int>(j), s) != 0.0;
+  };
+  std::size_t site = 0;
+  for (const std::size_t j : columns) {
+    for (;; ++site) {
+      if (site >= sites.size()) return SiteGap{j, std::nullopt};
+      if (!counts(site)) continue;
+      if (nonzero(j, sites[site])) break;
+      if (square) return SiteGap{j, site};
+      // Past the support (N_j vanishes from here on): no later site helps.
+      if (sites[site] >= knots[j + p + 1]) return SiteGap{j, std::nullopt};
+    }
+    ++site;
+  }
+  return std::nullopt;
+}
+
+Error schoenberg_whitney_error(std::span<const double> knots, int degree, std::span<const double> sites,
+                               const SiteGap& gap, std::size_t first_parameter, bool weighted,
+                               const std::string& consequence) {
+  const std::size_t j = gap.basis_function;
+  const std::string support =
+      "[" + number_text(knots[j]) + ", " + number_text(knots[j + static_cast<std::size_t>(degree) + 1]) + ")";
+  const std::string what =
+      gap.site ? "parameter " + std::to_string(*gap.site + first_parameter) + " (" + number_text(sites[*gap.site]) +
+                     ") is not inside the support " + support + " of basis function " + std::to_string(j)
+               : std::string("no point ") + (weighted ? "of positive weight " : "") + "is left for basis function " +
+                     std::to_string(j) + " (support " + support + ")";
+  return Error{what + ": the knots and parameters violate the Schoenberg–Whitney condition, " + consequence};
 }
 
 Expected<PointArray> solve_collocation(int degree, std::span<const double> knots, std::span<const double> sites,

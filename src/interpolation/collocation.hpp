@@ -13,6 +13,8 @@
 //
 // Internal to src/interpolation.
 
+#include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -32,9 +34,45 @@ struct EndConstraint {
 /// Checks what every interpolation method needs of its input: `count`
 /// parameters, all finite and strictly increasing, and finite coordinates.
 /// `needed_points` and `method` word the error for too few points:
-/// "3 points, not-a-knot cubic interpolation needs at least 4".
+/// "cubic interpolation with not-a-knot ends needs at least 4 points, got 3"
+/// (the wording of every interpolation method's point count).
 Status check_interpolation_input(const PointArray& points, std::span<const double> parameters,
                                  std::size_t count, std::size_t needed_points, const std::string& method);
+
+/// Where the Schoenberg–Whitney condition fails: the first basis function
+/// left without a site of its own and, when sites and basis functions are
+/// as many (interpolation), the site it was given and vanishes at.
+struct SiteGap {
+  std::size_t basis_function = 0;
+  std::optional<std::size_t> site;
+};
+
+/// The Schoenberg–Whitney condition (Schoenberg & Whitney 1953; de Boor, A
+/// Practical Guide to Splines, ch. XIII) for the basis functions `columns`
+/// (increasing indices) of `degree` on `knots` and the increasing `sites`:
+/// each column can be given its own site, in increasing order, where it does
+/// not vanish. Then the collocation matrix of those columns and sites is
+/// non-singular (interpolation), or the least-squares design matrix has full
+/// column rank and BᵀB is positive definite (fits). Sites of weight 0 do not
+/// count (`weights` empty: all 1). Each column in turn takes the first
+/// remaining site where it is non-zero; the supports move right with the
+/// index, so this finds sites whenever any exist. Non-zero: inside the open
+/// support (U_j, U_{j+p+1}), or on its ends where basis_function says so
+/// (the domain's ends closed as evaluation closes them). Nothing when the
+/// condition holds. O(m + n), plus O(p²) per site on the end of a support.
+std::optional<SiteGap> schoenberg_whitney_gap(std::span<const double> knots, int degree,
+                                              std::span<const std::size_t> columns, std::span<const double> sites,
+                                              std::span<const double> weights = {});
+
+/// The error of a gap, one wording for every method: "parameter 3 (3) is not
+/// inside the support [0, 2.75) of basis function 3: the knots and parameters
+/// violate the Schoenberg–Whitney condition, <consequence>", or, with no site
+/// to name, "no point [of positive weight] is left for basis function 4
+/// (support [5.05, 5.25)): ...". `first_parameter` is the number of
+/// sites[0] among the caller's parameters.
+Error schoenberg_whitney_error(std::span<const double> knots, int degree, std::span<const double> sites,
+                               const SiteGap& gap, std::size_t first_parameter, bool weighted,
+                               const std::string& consequence);
 
 /// The control points (n + 1 = knots.size() - degree - 1 of them) of the
 /// clamped B-spline of `degree` on `knots` with C(sites_i) = points_i and the

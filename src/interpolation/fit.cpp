@@ -15,6 +15,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
@@ -25,6 +26,7 @@
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
 #include "../core/number_text.hpp"
+#include "collocation.hpp"
 #include "fit_banded.hpp"
 #include "input_checks.hpp"
 
@@ -89,67 +91,38 @@ std::vector<double> clamped_knots(std::span<const double> parameters, int degree
   return knots;
 }
 
-/// N_i(t) != 0 for a clamped knot vector of degree p >= 1: the open support
-/// (U_i, U_{i+p+1}), plus t_0 for N_0 and t_m for N_n (where they are 1).
-bool left_of_support(std::span<const double> knots, std::size_t i, double t) {
-  return !(i == 0 && t == knots.front()) && t <= knots[i];
-}
-bool right_of_support(std::span<const double> knots, int degree, std::size_t i, double t) {
-  const std::size_t n = knots.size() - static_cast<std::size_t>(degree) - 2;
-  return !(i == n && t == knots.back()) && t >= knots[i + static_cast<std::size_t>(degree) + 1];
+/// The fit's rows and free columns: interpolated ends fix Q_0 = P_0 and
+/// Q_n = P_m and leave the columns 1..n−1 and the rows 1..m−1 (The NURBS
+/// Book eq. 9.63–9.67); free ends leave all of them.
+struct FreePart {
+  std::size_t first_row = 0, end_row = 0;
+  std::vector<std::size_t> columns;
+};
+FreePart free_part(std::size_t knot_count, int degree, std::size_t point_count, FitEnds ends) {
+  const std::size_t n = knot_count - static_cast<std::size_t>(degree) - 2;
+  const bool clamp = ends == FitEnds::interpolated;
+  FreePart part;
+  part.first_row = clamp ? 1 : 0;
+  part.end_row = clamp ? point_count - 1 : point_count;
+  if (clamp && n < 2) return part;  // Q_0 and Q_n fixed, nothing free
+  for (std::size_t j = clamp ? 1 : 0; j <= (clamp ? n - 1 : n); ++j) part.columns.push_back(j);
+  return part;
 }
 
-/// The Schoenberg–Whitney condition of the fit's free columns and rows:
-/// increasing rows k_j with N_j(t_{k_j}) != 0 for every free column j
-/// (then BᵀB is positive definite; Schoenberg & Whitney 1953, de Boor, A
-/// Practical Guide to Splines, ch. XIII). The supports' ends increase with
-/// j, so taking the first usable row for each column in turn finds such
-/// rows whenever they exist. O(m + n).
-bool schoenberg_whitney(std::span<const double> knots, int degree, std::span<const double> parameters,
-                        FitEnds ends) {
-  const std::size_t n = knots.size() - static_cast<std::size_t>(degree) - 2;
-  const bool clamp = ends == FitEnds::interpolated;
-  if (clamp && n < 2) return true;  // Q_0 and Q_n fixed, nothing free
-  const std::size_t first = clamp ? 1 : 0, last = clamp ? n - 1 : n;  // free columns [first, last]
-  std::size_t row = clamp ? 1 : 0;
-  const std::size_t end_row = clamp ? parameters.size() - 1 : parameters.size();
-  for (std::size_t j = first; j <= last; ++j) {
-    while (row < end_row && left_of_support(knots, j, parameters[row])) ++row;
-    if (row >= end_row || right_of_support(knots, degree, j, parameters[row])) return false;
-    ++row;
+/// The Schoenberg–Whitney condition of a fit's free columns and rows
+/// (detail::schoenberg_whitney_gap), as the error naming the basis function
+/// left without a point; then BᵀB is singular.
+Status check_schoenberg_whitney(std::span<const double> knots, int degree, std::span<const double> parameters,
+                                std::span<const double> weights, FitEnds ends) {
+  const FreePart part = free_part(knots.size(), degree, parameters.size(), ends);
+  const std::size_t rows = part.end_row - part.first_row;
+  const std::span<const double> sites = parameters.subspan(part.first_row, rows);
+  const std::span<const double> row_weights = weights.empty() ? weights : weights.subspan(part.first_row, rows);
+  if (const auto gap = detail::schoenberg_whitney_gap(knots, degree, part.columns, sites, row_weights)) {
+    return detail::schoenberg_whitney_error(knots, degree, sites, *gap, part.first_row, !weights.empty(),
+                                            "the fit's normal equations are singular");
   }
-  return true;
-}
-
-/// The first free basis function that the Schoenberg–Whitney condition
-/// leaves without a point, for any valid knots (clamped or not): greedily,
-/// each free column j in turn takes the first remaining row of positive
-/// weight where N_j is non-zero (basis_function: the end of the domain closed
-/// as the evaluation does). The supports move right with j, so the greedy
-/// choice finds increasing rows whenever they exist. Nothing when every
-/// column gets a row. O(m p²).
-std::optional<std::size_t> uncovered_column(std::span<const double> knots, int degree,
-                                            std::span<const double> parameters, std::span<const double> weights,
-                                            FitEnds ends) {
-  const std::size_t n = knots.size() - static_cast<std::size_t>(degree) - 2;
-  const bool clamp = ends == FitEnds::interpolated;
-  if (clamp && n < 2) return std::nullopt;
-  const std::size_t first = clamp ? 1 : 0, last = clamp ? n - 1 : n;
-  std::size_t row = clamp ? 1 : 0;
-  const std::size_t end_row = clamp ? parameters.size() - 1 : parameters.size();
-  for (std::size_t j = first; j <= last; ++j) {
-    const double support_end = knots[j + static_cast<std::size_t>(degree) + 1];
-    for (;; ++row) {
-      if (row >= end_row) return j;
-      const bool weighted = weights.empty() || weights[row] > 0.0;
-      if (weighted && basis_function(knots, degree, static_cast<int>(j), parameters[row]) != 0.0) break;
-      // Past the support (N_j vanishes from here on): no later row helps.
-      if (parameters[row] >= support_end && basis_function(knots, degree, static_cast<int>(j), parameters[row]) == 0.0)
-        return j;
-    }
-    ++row;
-  }
-  return std::nullopt;
+  return {};
 }
 
 // --- Gauss–Legendre ------------------------------------------------------------------
@@ -220,6 +193,19 @@ struct Solution {
   PointArray control_points;
   double residual_sum = 0.0;  ///< Σ ‖C(t_k) − P_k‖² from the design rows
   double trace = 0.0;         ///< tr H
+};
+
+/// What GCV needs of one λ: the residual and tr H, without the curve.
+struct Score {
+  double residual_sum = 0.0;
+  double trace = 0.0;
+};
+
+/// The storage of one solve, kept across the λ of a GCV search: for 10⁶
+/// points each solve would otherwise allocate (and page in) some 50 MB.
+struct SolveBuffers {
+  SymmetricBand matrix{0, 1};
+  std::vector<double> rhs;
 };
 
 /// The least-squares / smoothing problem on fixed knots (see the file comment).
@@ -294,46 +280,63 @@ class FitSystem {
 
   /// λ₀ = tr G / tr Ω over the free columns: where data and penalty weigh alike.
   double smoothing_scale() const noexcept {
-    const double g = gram_.trace(), omega = free_penalty_.trace();
+    const double g = data_trace(), omega = penalty_trace();
     return g > 0.0 && omega > 0.0 ? g / omega : 1.0;
   }
+  /// tr G = tr(BᵀB) and tr Ω over the free columns.
+  double data_trace() const noexcept { return gram_.trace(); }
+  double penalty_trace() const noexcept { return free_penalty_.trace(); }
 
   /// The fit at λ (0: plain least squares); nothing when the normal
   /// equations are singular. `with_trace`: also tr H by the band of the
   /// inverse (for λ = 0 it is the number of control points exactly).
   std::optional<Solution> solve(double lambda, bool with_trace) const {
+    SolveBuffers buffers;
+    const auto score = solve_into(lambda, with_trace, buffers);
+    if (!score) return std::nullopt;
     const auto d = static_cast<std::size_t>(points_.dimension());
-    SymmetricBand matrix = gram_;
-    std::vector<double> rhs = right_side_;
-    if (lambda > 0.0) {
-      matrix.add_scaled(free_penalty_, lambda);
-      for (std::size_t k = 0; k < coupling_.size(); ++k) rhs[k] -= lambda * coupling_[k];
-    }
-    if (!matrix.factor()) return std::nullopt;
-    matrix.solve(rhs, d);
-
-    Solution solution;
     std::vector<double> all(count_ * d);
     if (clamp_) {
       std::copy(points_[0].begin(), points_[0].end(), all.begin());
       std::copy(points_[points_.size() - 1].begin(), points_[points_.size() - 1].end(),
                 all.begin() + static_cast<std::ptrdiff_t>((count_ - 1) * d));
     }
-    std::copy(rhs.begin(), rhs.end(), all.begin() + static_cast<std::ptrdiff_t>(first_column_ * d));
-    solution.control_points = PointArray::from_trusted(points_.dimension(), std::move(all));
-    solution.residual_sum = residual_sum(solution.control_points);
-    const std::size_t fixed = count_ - free_count_;
-    if (lambda == 0.0) {
-      solution.trace = static_cast<double>(count_);
-    } else if (with_trace) {
-      solution.trace = static_cast<double>(fixed) + matrix.inverse_band().trace_of_product(gram_);
-    } else {
-      solution.trace = kNotANumber;
-    }
-    return solution;
+    std::copy(buffers.rhs.begin(), buffers.rhs.end(), all.begin() + static_cast<std::ptrdiff_t>(first_column_ * d));
+    return Solution{PointArray::from_trusted(points_.dimension(), std::move(all)), score->residual_sum, score->trace};
   }
 
+  /// The residual and tr H at λ > 0 for GCV, in `buffers` (reused from one
+  /// λ to the next); nothing when the normal equations are singular.
+  std::optional<Score> score(double lambda, SolveBuffers& buffers) const { return solve_into(lambda, true, buffers); }
+
  private:
+  /// Factors G + λΩ and solves for the free control points into buffers.rhs.
+  std::optional<Score> solve_into(double lambda, bool with_trace, SolveBuffers& buffers) const {
+    const auto d = static_cast<std::size_t>(points_.dimension());
+    buffers.rhs.assign(right_side_.begin(), right_side_.end());
+    bool factored = false;
+    if (lambda > 0.0) {
+      for (std::size_t k = 0; k < coupling_.size(); ++k) buffers.rhs[k] -= lambda * coupling_[k];
+      factored = buffers.matrix.factor_sum(gram_, free_penalty_, lambda);
+    } else {
+      buffers.matrix = gram_;
+      factored = buffers.matrix.factor();
+    }
+    if (!factored) return std::nullopt;
+    buffers.matrix.solve(buffers.rhs, d);
+    Score score;
+    score.residual_sum = residual_sum(buffers.rhs);
+    const std::size_t fixed = count_ - free_count_;
+    if (lambda == 0.0) {
+      score.trace = static_cast<double>(count_);
+    } else if (with_trace) {
+      score.trace = static_cast<double>(fixed) + buffers.matrix.trace_of_inverse_times(gram_);
+    } else {
+      score.trace = kNotANumber;
+    }
+    return score;
+  }
+
   /// Adds row `row` of the design to G and Bᵀ P̃ (free columns only).
   void accumulate_row(std::size_t row) {
     const auto p = static_cast<std::size_t>(degree_);
@@ -360,24 +363,24 @@ class FitSystem {
   /// The weight of design row `row` (1 without weights).
   double weight_of(std::size_t row) const noexcept { return weights_.empty() ? 1.0 : weights_[row + first_row_]; }
 
-  /// Σ_k w_k ‖P̃_k − Σ_free N_j(t_k) Q_j‖² (rows 0 and m of interpolated ends are exact).
-  double residual_sum(const PointArray& control_points) const {
+  /// Σ_k w_k ‖P̃_k − Σ_free N_j(t_k) Q_j‖² for the free control points Q
+  /// (free_count rows of d values; rows 0 and m of interpolated ends are exact).
+  double residual_sum(std::span<const double> free) const {
     const auto p = static_cast<std::size_t>(degree_);
     const auto d = static_cast<std::size_t>(points_.dimension());
     double sum = 0.0;
-    std::vector<double> fitted(d);
     for (std::size_t row = 0; row < spans_.size(); ++row) {
       const double* values = basis_.data() + row * (p + 1);
-      std::fill(fitted.begin(), fitted.end(), 0.0);
       const std::size_t column0 = spans_[row] - p;
-      for (std::size_t r = 0; r <= p; ++r) {
-        const std::size_t a = column0 + r;
-        if (a < first_column_ || a >= first_column_ + free_count_) continue;
-        for (std::size_t c = 0; c < d; ++c) fitted[c] += values[r] * control_points[a][c];
-      }
+      // The free columns of the row's p+1 (interpolated ends drop the first and last).
+      const std::size_t first = std::max(column0, first_column_);
+      const std::size_t end = std::min(column0 + p + 1, first_column_ + free_count_);
+      const double weight = weight_of(row);
       for (std::size_t c = 0; c < d; ++c) {
-        const double r = targets_[row * d + c] - fitted[c];
-        sum += weight_of(row) * r * r;
+        double fitted = 0.0;  // in a register: Σ_r N_r(t) Q_r, coordinate c
+        for (std::size_t a = first; a < end; ++a) fitted += values[a - column0] * free[(a - first_column_) * d + c];
+        const double r = targets_[row * d + c] - fitted;
+        sum += weight * r * r;
       }
     }
     return sum;
@@ -442,12 +445,79 @@ Error singular_error(std::size_t control_points, double lambda) {
   return Error{message + ": the data do not determine the control points"};
 }
 
+/// A number to three significant digits, for the approximate values of a hint.
+std::string rounded_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+/// Why a smoothing fit with a given λ is singular, and which λ would do.
+/// The system G + λΩ loses G in rounding once λ tr Ω outweighs tr G by about
+/// 1 / tolerances::kFitSingularPivot (Ω alone is singular on straight lines
+/// with free ends); below λ₀ the data alone must determine the control
+/// points, which more control points than points (knots at every parameter)
+/// do not. The useful range is the one GCV searches: from λ₀ 10^-10 (all but
+/// interpolating) to λ₀ 10^6 (heavily smoothed), λ₀ = tr G / tr Ω.
+Error smoothing_singular_error(const FitSystem& system, double lambda, std::size_t point_count) {
+  const double scale = system.smoothing_scale();
+  // log10(λ tr Ω / tr G) without forming the product, which overflows for λ near 1e308.
+  const double g = system.data_trace(), omega = system.penalty_trace();
+  const double decades = g > 0.0 && omega > 0.0 ? std::log10(lambda) + std::log10(omega) - std::log10(g) : 0.0;
+  const std::string power = "10^" + std::to_string(static_cast<long>(std::lround(decades)));
+  std::string message = "the smoothing λ = " + number_text(lambda);
+  if (lambda >= scale) {
+    message += " is too large for these data: λ·tr(Ω) outweighs tr(BᵀB) by about " + power +
+               ", the data are lost in rounding and";
+  } else {
+    message += " is too small for these data: λ·tr(Ω) is about " + power + " of tr(BᵀB), too little to determine " +
+               std::to_string(system.control_point_count()) + " control points from " + std::to_string(point_count) +
+               " points:";
+  }
+  return Error{message + " the fit's normal equations are singular; λ from about " +
+               rounded_text(scale * std::pow(10.0, -tolerances::kGcvSearchDecadesBelow)) + " (nearly interpolating) to " +
+               rounded_text(scale * std::pow(10.0, tolerances::kGcvSearchDecadesAbove)) +
+               " (heavily smoothed, towards a straight line) is the range GCV searches here (λ₀·10^-" +
+               rounded_text(tolerances::kGcvSearchDecadesBelow) + " to λ₀·10^" +
+               rounded_text(tolerances::kGcvSearchDecadesAbove) + ", λ₀ = tr(BᵀB)/tr(Ω) = " + rounded_text(scale) +
+               "): give a λ there, or let GCV choose it"};
+}
+
 // --- GCV search ----------------------------------------------------------------------
+
+/// The number of steps of the GCV grid over log10 λ.
+int grid_steps() {
+  return static_cast<int>(
+      std::lround((tolerances::kGcvSearchDecadesAbove + tolerances::kGcvSearchDecadesBelow) / tolerances::kGcvGridStepDecades));
+}
+
+/// One GCV search's evaluations, reported as the fraction of those it makes
+/// at most: the grid, the golden section on a bracket of two grid steps
+/// (kGcvRefinementDecades wide at the end) and the final solve.
+class GcvProgress {
+ public:
+  GcvProgress(Progress progress, int grid_points) : progress_(progress) {
+    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+    const double golden = std::ceil(std::log(tolerances::kGcvRefinementDecades /
+                                             (2.0 * tolerances::kGcvGridStepDecades)) / std::log(ratio));
+    total_ = static_cast<double>(grid_points) + 2.0 + std::max(golden, 0.0) + 1.0;
+  }
+  void step() {
+    done_ += 1.0;
+    progress_(std::min(done_ / total_, 1.0));
+  }
+
+ private:
+  Progress progress_;
+  double done_ = 0.0, total_ = 1.0;
+};
 
 /// GCV at λ = λ₀ 10^x, +∞ where the system is singular, GCV undefined, or
 /// the fit (nearly) interpolates.
-double gcv_at(const FitSystem& system, double scale, double x, std::size_t point_count) {
-  const auto solution = system.solve(scale * std::pow(10.0, x), true);
+double gcv_at(const FitSystem& system, double scale, double x, std::size_t point_count, SolveBuffers& buffers,
+              GcvProgress& progress) {
+  const auto solution = system.score(scale * std::pow(10.0, x), buffers);
+  progress.step();
   if (!solution) return std::numeric_limits<double>::infinity();
   if (static_cast<double>(point_count) - solution->trace < tolerances::kGcvNearInterpolation)
     return std::numeric_limits<double>::infinity();  // (near) interpolation: GCV is rounding noise there
@@ -458,15 +528,17 @@ double gcv_at(const FitSystem& system, double scale, double x, std::size_t point
 /// The λ minimizing GCV: the best point of a grid over log10 λ, then
 /// golden-section search in the bracket of its two neighbours. Nothing when
 /// GCV is undefined at every grid point.
-std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_count) {
+std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_count, GcvProgress& progress) {
   const double scale = system.smoothing_scale();
   const double step = tolerances::kGcvGridStepDecades;
   const double low = -tolerances::kGcvSearchDecadesBelow;
-  const int steps = static_cast<int>(std::lround((tolerances::kGcvSearchDecadesAbove + tolerances::kGcvSearchDecadesBelow) / step));
+  const int steps = grid_steps();
+  SolveBuffers buffers;
+  const auto at = [&](double x) { return gcv_at(system, scale, x, point_count, buffers, progress); };
   double best_x = 0.0, best = std::numeric_limits<double>::infinity();
   for (int i = 0; i <= steps; ++i) {
     const double x = low + i * step;
-    const double score = gcv_at(system, scale, x, point_count);
+    const double score = at(x);
     if (score < best) {
       best = score;
       best_x = x;
@@ -479,20 +551,20 @@ std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_c
   const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
   double a = std::max(best_x - step, low), b = std::min(best_x + step, tolerances::kGcvSearchDecadesAbove);
   double c = b - ratio * (b - a), e = a + ratio * (b - a);
-  double fc = gcv_at(system, scale, c, point_count), fe = gcv_at(system, scale, e, point_count);
+  double fc = at(c), fe = at(e);
   while (b - a > tolerances::kGcvRefinementDecades) {
     if (fc <= fe) {
       b = e;
       e = c;
       fe = fc;
       c = b - ratio * (b - a);
-      fc = gcv_at(system, scale, c, point_count);
+      fc = at(c);
     } else {
       a = c;
       c = e;
       fc = fe;
       e = a + ratio * (b - a);
-      fe = gcv_at(system, scale, e, point_count);
+      fe = at(e);
     }
   }
   double x = best_x;
@@ -574,12 +646,7 @@ Expected<BSplineFit> fit_least_squares_on_knots(const PointArray& points, std::s
                    std::to_string(width) + " copies each)"};
     }
   }
-  if (const auto column = uncovered_column(knots, degree, parameters, weights, ends)) {
-    const std::size_t j = *column;
-    return Error{"no point of positive weight is left for basis function " + std::to_string(j) + " (support [" +
-                 number_text(knots[j]) + ", " + number_text(knots[j + width]) + ")): the knots and parameters " +
-                 "violate the Schoenberg–Whitney condition, the fit's normal equations are singular"};
-  }
+  if (auto ok = check_schoenberg_whitney(knots, degree, parameters, weights, ends); !ok) return ok.error();
   const FitSystem system(points, parameters, degree, std::move(knots), ends, false, weights);
   auto solution = system.solve(0.0, false);
   if (!solution) return singular_error(count, 0.0);
@@ -587,7 +654,7 @@ Expected<BSplineFit> fit_least_squares_on_knots(const PointArray& points, std::s
 }
 
 Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const double> parameters,
-                                   const SmoothingOptions& options) {
+                                   const SmoothingOptions& options, Progress progress) {
   const int degree = options.degree;
   if (auto valid = check_fit_input(points, parameters, degree); !valid) return valid.error();
   if (degree < 2) {
@@ -621,20 +688,25 @@ Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const dou
                    " points: give λ > 0 or fewer control points"};
     }
   } else {
-    const auto chosen = gcv_smoothing(system, points.size());
+    GcvProgress evaluations(progress, grid_steps() + 1);
+    const auto chosen = gcv_smoothing(system, points.size(), evaluations);
     if (!chosen) return Error{"GCV cannot choose λ: the fit's normal equations are singular for every λ tried"};
     lambda = *chosen;
     from_gcv = true;
   }
   auto solution = system.solve(lambda, true);
-  if (!solution) return singular_error(count, lambda);
+  if (!solution) {
+    if (!from_gcv) return smoothing_singular_error(system, lambda, points.size());
+    return singular_error(count, lambda);
+  }
   BSplineFit fit = make_result(system, std::move(*solution), points, parameters, degree, lambda);
   fit.smoothing_from_gcv = from_gcv;
+  progress(1.0);
   return fit;
 }
 
 Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const double> parameters, int degree,
-                                      Tolerance tolerance, FitEnds ends) {
+                                      Tolerance tolerance, FitEnds ends, Progress progress) {
   if (auto valid = check_fit_input(points, parameters, degree); !valid) return valid.error();
   if (auto finite = check_finite(tolerance.distance, "the tolerance"); !finite) return finite.error();
   if (!(tolerance.distance > 0.0)) {
@@ -652,6 +724,7 @@ Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const 
   std::vector<double> interior;  // interior knots, increasing
   std::vector<double> fallback;  // the last round's knots with only its worst new knot
   std::optional<BSplineFit> previous;
+  double reported = 0.0;  // the fraction last given to progress
   const auto not_reached = [&](const BSplineFit& fit, const char* why) {
     return Error{"the tolerance " + number_text(tolerance.distance) + " is not reached: max error " +
                  number_text(fit.max_error) + " at point " + std::to_string(fit.worst_point) + " with " +
@@ -673,7 +746,15 @@ Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const 
       return not_reached(*previous, "more control points make the normal equations singular in double precision");
     }
     BSplineFit fit = make_result(system, std::move(*solution), points, parameters, degree, 0.0);
-    if (fit.max_error <= tolerance.distance) return fit;
+    if (fit.max_error <= tolerance.distance) {
+      progress(1.0);
+      return fit;
+    }
+    // Progress: the share of points already within the tolerance (the best so far).
+    const auto within = std::count_if(fit.errors.begin(), fit.errors.end(),
+                                      [&](double e) { return e <= tolerance.distance; });
+    reported = std::max(reported, static_cast<double>(within) / static_cast<double>(points.size()));
+    progress(reported);
 
     // The knot spans with their points (a point at a knot belongs to the span on its right).
     std::vector<Span> spans;
@@ -743,11 +824,11 @@ Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const 
     std::vector<double> next;
     if (!unique.empty()) {
       next = with_knots(unique);
-      if (!schoenberg_whitney(clamped_knots(parameters, degree, next), degree, parameters, ends)) {
+      if (!check_schoenberg_whitney(clamped_knots(parameters, degree, next), degree, parameters, {}, ends)) {
         next.clear();
         for (const Candidate& candidate : unique) {  // one knot at a time, worst first
           std::vector<double> single = with_knots(std::span<const Candidate>(&candidate, 1));
-          if (schoenberg_whitney(clamped_knots(parameters, degree, single), degree, parameters, ends)) {
+          if (check_schoenberg_whitney(clamped_knots(parameters, degree, single), degree, parameters, {}, ends)) {
             next = std::move(single);
             break;
           }

@@ -237,8 +237,11 @@ Expected<BSplineCurve> interpolate_bspline(const PointArray& points, std::span<c
   // 2 points are then enough), which an unsigned subtraction would wrap.
   const auto needed = static_cast<std::size_t>(
       std::max<long long>(2, static_cast<long long>(p) + 1 - static_cast<long long>(derivatives.size())));
-  const std::string method = "degree-" + std::to_string(p) + " interpolation with " +
-                             std::to_string(derivatives.size()) + " end derivatives";
+  const std::string method =
+      "degree-" + std::to_string(p) + " B-spline interpolation" +
+      (derivatives.empty() ? std::string()
+                           : " with " + std::to_string(derivatives.size()) + " end derivative" +
+                                 (derivatives.size() == 1 ? "" : "s"));
   if (auto ok = detail::check_interpolation_input(points, parameters, m1, needed, method); !ok) return ok.error();
 
   // Sites with t_0 repeated once per start derivative and t_m once per end
@@ -303,23 +306,21 @@ Expected<BSplineCurve> interpolate_on_knots(const PointArray& points, std::span<
                  " to knot " + std::to_string(last)};
   }
 
-  // Schoenberg–Whitney (de Boor ch. XIII): row j of the system, in the
-  // solver's order, must not vanish on basis function j. Point rows: N_j at
-  // the parameter, the end of the domain closed as the evaluation closes it.
-  // Derivative rows need t_0 (t_m) in the closed support of N_j, which holds
-  // for every j they take (j <= p at the start, so knots[j] <= knots[p] = t_0
-  // <= knots[j+p+1]; alike at the end): only point rows can fail.
+  // Schoenberg–Whitney: the point rows in the solver's order (C(t_0), the
+  // start derivatives, the interior points, the end derivatives, C(t_m)) take
+  // the basis functions left by the derivative rows. A derivative row needs
+  // t_0 (t_m) in the closed support of N_j, which holds for every j it takes
+  // (j <= p at the start, so knots[j] <= knots[p] = t_0 <= knots[j+p+1];
+  // alike at the end): only point rows can fail.
+  std::vector<std::size_t> columns;
+  columns.reserve(m1);
   for (std::size_t j = 0; j < unknowns; ++j) {
     const bool derivative_row = (j >= 1 && j <= at_start) || (j + 1 < unknowns && j + 1 + at_end >= unknowns);
-    if (derivative_row) continue;
-    const std::size_t i = j == 0 ? 0 : (j + 1 == unknowns ? m1 - 1 : j - at_start);
-    if (basis_function(knots, p, static_cast<int>(j), parameters[i]) == 0.0) {
-      return Error{"parameter " + std::to_string(i) + " (" + number_text(parameters[i]) +
-                   ") is not inside the support [" + number_text(knots[j]) + ", " + number_text(knots[j + width]) +
-                   ") of basis function " + std::to_string(j) +
-                   ": the knots and parameters violate the Schoenberg–Whitney condition, no spline on these knots "
-                   "interpolates them"};
-    }
+    if (!derivative_row) columns.push_back(j);
+  }
+  if (const auto gap = detail::schoenberg_whitney_gap(knots, p, columns, parameters)) {
+    return detail::schoenberg_whitney_error(knots, p, parameters, *gap, 0, false,
+                                            "no spline on these knots interpolates them");
   }
 
   std::vector<detail::EndConstraint> constraints;

@@ -20,8 +20,10 @@ namespace {
 
 using io_detail::in_quotes;
 
-/// What reading one field found.
-enum class FieldKind { number, empty, not_a_number, nan, infinite, overflow };
+/// What reading one field found. `decimal_comma`: not a number, but one if
+/// its single ',' were a '.' ("9,5"), as spreadsheets write numbers where ','
+/// is the decimal mark.
+enum class FieldKind { number, empty, not_a_number, decimal_comma, nan, infinite, overflow };
 
 struct Field {
   FieldKind kind = FieldKind::not_a_number;
@@ -45,7 +47,15 @@ Field read_field(std::string_view text) {
   double value = 0.0;
   const char* end = digits.data() + digits.size();
   const auto [ptr, ec] = std::from_chars(digits.data(), end, value);
-  if (ptr != end || ec == std::errc::invalid_argument) return {FieldKind::not_a_number};
+  if (ptr != end || ec == std::errc::invalid_argument) {
+    const std::size_t comma = text.find(',');
+    if (comma != text.npos && text.find(',', comma + 1) == text.npos && text.find('.') == text.npos) {
+      std::string dotted(text);
+      dotted[comma] = '.';
+      if (read_field(dotted).kind == FieldKind::number) return {FieldKind::decimal_comma};
+    }
+    return {FieldKind::not_a_number};
+  }
   if (ec == std::errc::result_out_of_range) {
     // from_chars reports overflow and underflow alike. Underflow reads as the
     // nearest representable value (0 or a subnormal, as in JSON, numpy or
@@ -74,8 +84,72 @@ std::string where(const std::string& source, std::size_t line, std::size_t field
   return fmt::format("{}, line {}, field {}", source, line, field);
 }
 
-Error field_error(const std::string& source, std::size_t line, std::size_t index, std::string_view text) {
-  return Error{where(source, line, index) + ": " + parse_number(text).error().message};
+/// The separator of a file, chosen by its first row (header or point), so
+/// that what spreadsheets and numpy write reads as it is: ';' when the row
+/// holds one (a ','-separated row of numbers never does); a tab when one
+/// stands inside a ','-separated field rather than around it ("1\t2",
+/// "9,5\t5"; "1,\t2" is ',' with a blank); ',' otherwise.
+char separator_of(std::string_view row) {
+  if (row.find(';') != row.npos) return ';';
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = row.find(',', start);
+    if (trim(row.substr(start, comma == row.npos ? row.npos : comma - start)).find('\t') != row.npos) return '\t';
+    if (comma == row.npos) return ',';
+    start = comma + 1;
+  }
+}
+
+std::string separator_name(char separator) {
+  return separator == '\t' ? std::string("tabs") : fmt::format("'{}'", separator);
+}
+
+/// A separator other than the file's that `text` holds, or 0: what a row
+/// written with another separator than the first row's shows.
+char other_separator(std::string_view text, char separator) {
+  for (const char candidate : {';', '\t', ','}) {
+    if (candidate != separator && text.find(candidate) != text.npos) return candidate;
+  }
+  return 0;
+}
+
+/// True when `text` is numbers separated by runs of spaces ("9.5 5", numpy's
+/// savetxt default): a hint, not a format casteljau reads.
+bool is_blank_separated(std::string_view text) {
+  if (text.find(' ') == text.npos) return false;
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t blank = std::min(text.find(' ', start), text.size());
+    if (blank > start && read_field(text.substr(start, blank - start)).kind != FieldKind::number) return false;
+    start = blank + 1;
+  }
+  return true;
+}
+
+/// Where the rows of a file are, for messages.
+struct TableContext {
+  const std::string& source;
+  char separator;
+  std::size_t first_row_line;
+};
+
+Error field_error(const TableContext& table, std::size_t line, std::size_t index, std::string_view text) {
+  const std::string location = where(table.source, line, index);
+  if (read_field(text).kind == FieldKind::decimal_comma) {
+    return Error{fmt::format("{}: {} uses ',' as the decimal mark; casteljau reads '.' as the decimal mark, and ',', "
+                             "';' or tabs between values (convert with: sed 's/,/./g')",
+                             location, in_quotes(text))};
+  }
+  if (const char other = other_separator(text, table.separator); other != 0 && other != ',') {
+    return Error{fmt::format("{}: {} is not a number; values are separated by {} on line {}, and this line has {} "
+                             "(one separator for the whole file: ',', ';' or tabs)",
+                             location, in_quotes(text), separator_name(table.separator), table.first_row_line,
+                             separator_name(other))};
+  }
+  if (is_blank_separated(text)) {
+    return Error{fmt::format("{}: {} holds numbers separated by spaces; casteljau reads ',', ';' or tabs between "
+                             "values (convert with: sed -E 's/ +/,/g')",
+                             location, in_quotes(text))};
+  }
+  return Error{location + ": " + parse_number(text).error().message};
 }
 
 /// The shared reader behind points and number columns. `what` names the rows
@@ -88,6 +162,7 @@ Expected<Table> parse_table(std::string_view text, const std::string& source, st
   std::size_t first_row_line = 0;  // the line whose width every row must have
   bool first_row = true;
   bool has_header = false;
+  char separator = ',';  // chosen by the first row
 
   std::size_t line = 0;
   while (!text.empty()) {
@@ -100,11 +175,27 @@ Expected<Table> parse_table(std::string_view text, const std::string& source, st
     const std::string_view content = trim(row);
     if (content.empty() || content.front() == '#') continue;  // blank line or comment
 
-    const auto count = static_cast<std::size_t>(std::count(row.begin(), row.end(), ',')) + 1;
+    if (first_row) separator = separator_of(content);
+    // Fields come from the trimmed row: blanks around the row are not empty
+    // fields, also when the blank is the separator (a tab).
+    const auto count = static_cast<std::size_t>(std::count(content.begin(), content.end(), separator)) + 1;
     if (!first_row && count != table.width) {
-      return Error{fmt::format("{}: {} field{}, but {} line {} has {} (every row must have the same number of fields)",
+      // A row without the file's separator but with another one was
+      // written with another separator: say so. In a file of one column,
+      // "0,5" is a decimal comma.
+      const char other = count == 1 ? other_separator(content, separator) : 0;
+      std::string hint;
+      if (other != 0) {
+        hint = fmt::format("; line {} separates values by {}, this line has {}", first_row_line,
+                           separator_name(separator), separator_name(other));
+      } else if (table.width == 1 && read_field(content).kind == FieldKind::decimal_comma) {
+        hint = fmt::format("; {} uses ',' as the decimal mark, casteljau reads '.' (convert with: sed 's/,/./g')",
+                           in_quotes(content));
+      }
+      return Error{fmt::format("{}: {} field{}, but {} line {} has {} (every row must have the same number of "
+                               "fields){}",
                                where(source, line), count, count == 1 ? "" : "s",
-                               has_header ? "the header on" : "the first row on", first_row_line, table.width)};
+                               has_header ? "the header on" : "the first row on", first_row_line, table.width, hint)};
     }
     const std::size_t row_start = table.values.size();
     if (row_start + count > tolerances::kMaxInputValues) {
@@ -117,9 +208,9 @@ Expected<Table> parse_table(std::string_view text, const std::string& source, st
     std::string_view first_bad_text;
     std::size_t index = 0;
     for (std::size_t start = 0;;) {
-      const std::size_t comma = row.find(',', start);
+      const std::size_t comma = content.find(separator, start);
       const std::string_view field =
-          trim(row.substr(start, comma == std::string_view::npos ? row.npos : comma - start));
+          trim(content.substr(start, comma == std::string_view::npos ? content.npos : comma - start));
       ++index;
       const Field parsed = read_field(field);
       if (parsed.kind == FieldKind::number) {
@@ -129,7 +220,12 @@ Expected<Table> parse_table(std::string_view text, const std::string& source, st
         first_bad_text = field;
         if (!first_row) break;  // a data row: the first bad field is the error
       }
-      if (parsed.kind != FieldKind::not_a_number && parsed.kind != FieldKind::empty) ++numbers;
+      // A header's names are no numbers, not even numbers in another
+      // notation ("9,5", "9.5 5"): such a row is a bad data row.
+      if ((parsed.kind != FieldKind::not_a_number && parsed.kind != FieldKind::empty) ||
+          (first_row && parsed.kind == FieldKind::not_a_number && is_blank_separated(field))) {
+        ++numbers;
+      }
       if (parsed.kind == FieldKind::empty && first_empty == 0) first_empty = index;
       if (comma == std::string_view::npos) break;
       start = comma + 1;
@@ -146,7 +242,7 @@ Expected<Table> parse_table(std::string_view text, const std::string& source, st
         continue;
       }
     }
-    if (first_bad != 0) return field_error(source, line, first_bad, first_bad_text);
+    if (first_bad != 0) return field_error({source, separator, first_row_line}, line, first_bad, first_bad_text);
     if (rows == max_rows) {
       return Error{fmt::format("{}: more than {} {}, the limit for one file", where(source, line), max_rows, what)};
     }

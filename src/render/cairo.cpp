@@ -124,8 +124,8 @@ Status commit(const std::filesystem::path& temporary, const std::filesystem::pat
 
 }  // namespace
 
-Status write_png(const Figure& figure, const std::filesystem::path& path) {
-  auto scene = layout(figure);
+Status write_png(const Figure& figure, const std::filesystem::path& path, Progress progress) {
+  auto scene = layout(figure, progress);
   if (!scene) return scene.error();
   auto temporary = temporary_beside(path);
   if (!temporary) return temporary.error();
@@ -139,8 +139,8 @@ Status write_png(const Figure& figure, const std::filesystem::path& path) {
   return commit(*temporary, path, status);
 }
 
-Status write_pdf(const Figure& figure, const std::filesystem::path& path) {
-  auto scene = layout(figure);
+Status write_pdf(const Figure& figure, const std::filesystem::path& path, Progress progress) {
+  auto scene = layout(figure, progress);
   if (!scene) return scene.error();
   auto temporary = temporary_beside(path);
   if (!temporary) return temporary.error();
@@ -160,12 +160,12 @@ Status write_pdf(const Figure& figure, const std::filesystem::path& path) {
   return commit(*temporary, path, status);
 }
 
-Status write_figure(const Figure& figure, const std::filesystem::path& path) {
+Status write_figure(const Figure& figure, const std::filesystem::path& path, Progress progress) {
   std::string extension = path.extension().string();
   for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".svg") return write_svg(figure, path);
-  if (extension == ".png") return write_png(figure, path);
-  if (extension == ".pdf") return write_pdf(figure, path);
+  if (extension == ".svg") return write_svg(figure, path, progress);
+  if (extension == ".png") return write_png(figure, path, progress);
+  if (extension == ".pdf") return write_pdf(figure, path, progress);
   if (extension.empty())
     return Error{fmt::format("cannot write '{}': the file name has no extension (use .svg, .png or .pdf)", path.string())};
   return Error{fmt::format("cannot write '{}': unknown figure format '{}' (use .svg, .png or .pdf)", path.string(),

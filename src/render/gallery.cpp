@@ -5,6 +5,7 @@
 // gallery_bspline.cpp and come last.
 #include "figure_list.hpp"
 #include "markup.hpp"
+#include "progress_part.hpp"
 #include "casteljau/render/gallery.hpp"
 
 #include <fmt/format.h>
@@ -408,6 +409,31 @@ RadialError radial_error(const BSplineCurve& curve, double radius, int samples) 
   return result;
 }
 
+std::span<const GallerySection> gallery_sections() {
+  static constexpr GallerySection kSections[] = {
+      {1, 16,
+       "Bézier curves: the Bernstein basis of degree 20, the notebook's curves and spirals, de Casteljau "
+       "constructions, splitting, the degree-200 evaluators, a repeated control point, the semicircle and the exact "
+       "NURBS arc, recursive subdivision, flattening, degree elevation, the vector form, a curvature comb"},
+      {17, 22,
+       "B-splines and NURBS: the basis for clamped and uniform knots, local control, knot multiplicity and "
+       "continuity, the NURBS circle, the pull of one weight"},
+      {23, 29,
+       "interpolation: the head and the car through every method, Runge's oscillation, natural splines, smoothing"},
+      {30, 34,
+       "surfaces: a bicubic Bézier patch, Coons patches with both blendings, B-spline surface local control, the NURBS "
+       "sphere and torus, a tessellation at two tolerances"},
+  };
+  return kSections;
+}
+
+std::string gallery_contents() {
+  std::string text;
+  for (const auto& section : gallery_sections())
+    text += fmt::format("{}{:02}-{:02} {}", text.empty() ? "" : "; ", section.first, section.last, section.topics);
+  return text;
+}
+
 Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path& examples_dir) {
   auto polygon = read_curve(examples_dir, "notebook_polygon.csv");
   if (!polygon) return polygon.error();
@@ -481,20 +507,38 @@ std::string gallery_index_html(const std::vector<GalleryFigure>& figures) {
   return html;
 }
 
+namespace {
+
+/// Building every figure, as a fraction of the whole gallery's work.
+constexpr double kBuildingShare = 0.1;
+
+}  // namespace
+
 Expected<std::vector<GalleryFigure>> write_gallery(const std::filesystem::path& dir,
-                                                   const std::filesystem::path& examples_dir) {
+                                                   const std::filesystem::path& examples_dir, Progress progress) {
+  progress(0.0);
   auto figures = gallery_figures(examples_dir);
   if (!figures) return figures.error();
+  progress(kBuildingShare);
   std::error_code error;
   std::filesystem::create_directories(dir, error);
   if (error || !std::filesystem::is_directory(dir))
     return Error{fmt::format("cannot create the folder '{}': {}", dir.string(),
                              error ? error.message() : std::string("a file of that name exists"))};
-  for (const auto& f : *figures) {
-    if (auto ok = write_svg(f.figure, dir / (f.name + ".svg")); !ok) return with_context(ok.error(), f.name);
-    if (auto ok = write_png(f.figure, dir / (f.name + ".png")); !ok) return with_context(ok.error(), f.name);
+  // Each figure's share of the rest, half for its SVG and half for its PNG
+  // (each lays the figure out): part k of 2 N ends where part k + 1 begins.
+  const double parts = 2.0 * static_cast<double>(figures->size());
+  auto bound = [&](std::size_t k) { return kBuildingShare + (1.0 - kBuildingShare) * static_cast<double>(k) / parts; };
+  for (std::size_t i = 0; i < figures->size(); ++i) {
+    const auto& f = (*figures)[i];
+    detail::ProgressPart svg(progress, bound(2 * i), bound(2 * i + 1)), png(progress, bound(2 * i + 1), bound(2 * i + 2));
+    if (auto ok = write_svg(f.figure, dir / (f.name + ".svg"), svg.callback()); !ok)
+      return with_context(ok.error(), f.name);
+    if (auto ok = write_png(f.figure, dir / (f.name + ".png"), png.callback()); !ok)
+      return with_context(ok.error(), f.name);
   }
   if (auto ok = write_file_atomically(dir / "index.html", gallery_index_html(*figures)); !ok) return ok.error();
+  progress(1.0);
   return figures;
 }
 

@@ -19,8 +19,13 @@
 #include <fmt/format.h>
 #include <limits>
 #include <string>
+#include <tuple>
 
+#include "casteljau/bezier/bernstein.hpp"
+#include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/ops/flatten.hpp"
+#include "casteljau/render/bernstein_graph.hpp"
+#include "progress_part.hpp"
 
 namespace casteljau::render {
 namespace {
@@ -77,12 +82,21 @@ double curve_scale(const BezierCurve& curve) {
   return std::hypot(x1 - x0, y1 - y0);
 }
 
-/// Tolerance for finding a curve's extent before the pixel scale is known:
-/// one ten-thousandth of its control box, invisible at any canvas size here.
-double coarse_tolerance(const BezierCurve& curve) {
+/// Tolerance for a curve in a panel with a logarithmic axis, where a model
+/// distance is no fixed number of pixels: one ten-thousandth of its control
+/// box, invisible at any canvas size here.
+double log_axis_tolerance(const BezierCurve& curve) {
   const double scale = curve_scale(curve);
   const double magnitude = scale_of(curve.control_points());
   return std::max(scale * 1e-4, std::max(magnitude, 1.0) * 1e-12);
+}
+
+/// The same for a Bernstein graph: one ten-thousandth of its height (<= 1).
+constexpr double kLogAxisGraphTolerance = 1e-4;
+
+/// What a curve is called in an error: its source, or its place in the panel.
+std::string curve_name(const CurveItem& c, std::size_t index) {
+  return c.source.empty() ? fmt::format("curve {}", index) : c.source;
 }
 
 Status check_item_points(const std::vector<Vec2>& points, const std::string& what) {
@@ -103,9 +117,19 @@ Status check_panel(const Panel& panel, std::size_t index) {
     for (const auto& s : panel.segments[i].segments)
       if (!finite(s[0]) || !finite(s[1])) return Error{fmt::format("{}, segments {}: a point is not finite", where, i)};
   for (std::size_t i = 0; i < panel.curves.size(); ++i)
-    for (const auto& piece : panel.curves[i].pieces)
+    for (const auto& piece : panel.curves[i].pieces) {
       if (piece.dimension() != 2)
-        return Error{fmt::format("{}, curve {}: a plane curve is needed, got dimension {}", where, i, piece.dimension())};
+        return Error{fmt::format("{}, {}: a plane curve is needed, got dimension {}", where,
+                                 curve_name(panel.curves[i], i), piece.dimension())};
+      if (auto ok = check_plotted_degree(piece.degree()); !ok)
+        return with_context(ok.error(), fmt::format("{}, {}", where, curve_name(panel.curves[i], i)));
+    }
+  for (std::size_t i = 0; i < panel.bernstein_graphs.size(); ++i) {
+    const auto& g = panel.bernstein_graphs[i];
+    if (g.degree < 1 || g.degree > tolerances::kMaxBezierDegree || g.index < 0 || g.index > g.degree)
+      return Error{fmt::format("{}, Bernstein graph {}: B_{{{},{}}} is not a Bernstein polynomial of degree 1..{}", where,
+                               i, g.degree, g.index, tolerances::kMaxBezierDegree)};
+  }
   for (const Axis* axis : {&panel.x, &panel.y}) {
     if (!axis->range) continue;
     const auto [lo, hi] = *axis->range;
@@ -117,9 +141,8 @@ Status check_panel(const Panel& panel, std::size_t index) {
   return {};
 }
 
-/// The data bounds of a panel (curves through a coarse flattening: their
-/// extent, not their control points', as matplotlib would fit the plotted line).
-Expected<Bounds> data_bounds(const Panel& panel) {
+/// The box of a panel's items other than curves and Bernstein graphs.
+Bounds item_bounds(const Panel& panel) {
   const bool xl = panel.x.logarithmic, yl = panel.y.logarithmic;
   Bounds b;
   for (const auto& r : panel.regions)
@@ -130,19 +153,98 @@ Expected<Bounds> data_bounds(const Panel& panel) {
     for (auto p : l.points) b.add(p, xl, yl);
   for (const auto& m : panel.markers)
     for (auto p : m.points) b.add(p, xl, yl);
+  return b;
+}
+
+/// Parameters at which each curve piece is sampled for the first guess of a
+/// panel's scale (the end points are its end control points).
+constexpr int kGuessSamples = 8;
+
+/// Points on the panel's curves and graphs that are cheap to find: each
+/// piece's end points and C(j / kGuessSamples), each graph's ends and peak
+/// (B_{n,k} is largest at k/n). Their box lies inside the true extent.
+void add_points_on_curves(const Panel& panel, Bounds& b) {
+  const bool xl = panel.x.logarithmic, yl = panel.y.logarithmic;
+  std::vector<double> ts, out;
+  for (int j = 1; j < kGuessSamples; ++j) ts.push_back(static_cast<double>(j) / kGuessSamples);
+  out.resize(2 * ts.size());
   for (const auto& c : panel.curves)
     for (const auto& piece : c.pieces) {
-      const double tol = coarse_tolerance(piece);
-      auto line = flatten(piece, Tolerance{tol});
-      if (!line) return line.error();
-      const auto& pts = line->points;
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        // Vertices lie on the curve; the curve strays at most tol (1e-4 of
-        // its size) beyond them, well inside the 5 % margins.
-        b.add(Vec2{{pts[i][0], pts[i][1]}}, xl, yl);
+      const auto& p = piece.control_points();
+      b.add(Vec2{{p[0][0], p[0][1]}}, xl, yl);
+      b.add(Vec2{{p[p.size() - 1][0], p[p.size() - 1][1]}}, xl, yl);
+      points_at(piece, ts, out);
+      for (std::size_t i = 0; i < ts.size(); ++i) b.add(Vec2{{out[2 * i], out[2 * i + 1]}}, xl, yl);
+    }
+  for (const auto& g : panel.bernstein_graphs) {
+    const double peak = static_cast<double>(g.index) / g.degree;
+    for (double t : {0.0, peak, 1.0}) b.add(Vec2{{t, bernstein(g.degree, g.index, t)}}, xl, yl);
+  }
+}
+
+/// The control boxes of the panel's curves (each curve lies in its control
+/// points' convex hull) and the unit square of its graphs: a box that holds
+/// everything, but can be far larger than the curves (a Lagrange polynomial's
+/// Bézier points reach 10^5 where the curve stays under 60).
+void add_control_boxes(const Panel& panel, Bounds& b) {
+  const bool xl = panel.x.logarithmic, yl = panel.y.logarithmic;
+  for (const auto& c : panel.curves)
+    for (const auto& piece : c.pieces) {
+      const auto& p = piece.control_points();
+      for (std::size_t i = 0; i < p.size(); ++i) b.add(Vec2{{p[i][0], p[i][1]}}, xl, yl);
+    }
+  if (!panel.bernstein_graphs.empty()) b.add(Vec2{{0.0, 0.0}}, xl, yl), b.add(Vec2{{1.0, 1.0}}, xl, yl);
+}
+
+/// A panel's curves and Bernstein graphs as polylines in data units.
+struct PanelLines {
+  std::vector<std::vector<Vec2>> curves;  ///< one per CurveItem, its pieces joined
+  std::vector<std::vector<Vec2>> graphs;  ///< one per BernsteinGraphItem
+};
+
+using detail::ProgressPart;
+
+/// Every curve and graph of the panel flattened within `tolerance` (model
+/// units); on a logarithmic axis within each one's own fallback instead.
+/// `done` hears the fraction of them flattened.
+Expected<PanelLines> flatten_lines(const Panel& panel, double tolerance, ProgressPart& done) {
+  const bool logarithmic = panel.x.logarithmic || panel.y.logarithmic;
+  const double count = static_cast<double>(panel.curves.size() + panel.bernstein_graphs.size());
+  PanelLines lines;
+  for (std::size_t i = 0; i < panel.curves.size(); ++i) {
+    done(static_cast<double>(i) / count);
+    std::vector<Vec2> points;
+    for (const auto& piece : panel.curves[i].pieces) {
+      auto line = flatten(piece, Tolerance{logarithmic ? log_axis_tolerance(piece) : tolerance});
+      if (!line) return with_context(line.error(), curve_name(panel.curves[i], i));
+      const auto& p = line->points;
+      for (std::size_t j = 0; j < p.size(); ++j) {
+        const Vec2 v{{p[j][0], p[j][1]}};
+        if (j == 0 && !points.empty() && points.back() == v) continue;  // shared joint
+        points.push_back(v);
       }
     }
-  return b;
+    lines.curves.push_back(std::move(points));
+  }
+  for (std::size_t i = 0; i < panel.bernstein_graphs.size(); ++i) {
+    done(static_cast<double>(panel.curves.size() + i) / count);
+    const auto& g = panel.bernstein_graphs[i];
+    auto points = bernstein_graph_polyline(g.degree, g.index, Tolerance{logarithmic ? kLogAxisGraphTolerance : tolerance});
+    if (!points) return with_context(points.error(), fmt::format("Bernstein graph {}", i));
+    lines.graphs.push_back(std::move(*points));
+  }
+  done(1.0);
+  return lines;
+}
+
+/// Adds the polylines' vertices to a box, widened by `widen` on every side.
+void add_lines(const PanelLines& lines, double widen, bool xl, bool yl, Bounds& b) {
+  for (const auto* group : {&lines.curves, &lines.graphs})
+    for (const auto& line : *group)
+      for (auto p : line) {
+        b.add(Vec2{{p[0] - widen, p[1] - widen}}, xl, yl);
+        b.add(Vec2{{p[0] + widen, p[1] + widen}}, xl, yl);
+      }
 }
 
 /// A range from data extent with matplotlib's 5 % margins (in log space on a log axis).
@@ -171,11 +273,6 @@ std::string tick_label(double value, int decimals) {
   }
   return text;
 }
-
-struct PanelPlan {
-  Rectangle cell;  // the panel's share of the canvas
-  Bounds bounds;
-};
 
 double text_height(double size) { return kDigitHeight * size; }
 
@@ -234,6 +331,104 @@ PanelFrame resolve_frame(const Panel& panel, const Rectangle& cell, const Bounds
   return f;
 }
 
+/// A panel's frame and the polylines drawn in it.
+struct ResolvedPanel {
+  PanelFrame frame;
+  PanelLines lines;
+};
+
+/// A polyline flattened this many times finer than its frame needs has about
+/// twice the vertices it needs (the count grows like tolerance^(-1/2)): it is
+/// flattened again at the tolerance the frame needs.
+constexpr double kFinerThanNeeded = 4.0;
+/// Rounds of "flatten, then fit the frame to what was flattened" before the
+/// frame is fitted to the vertices widened by the tolerance (which holds the
+/// curves whatever the round) and the curves flattened for it once more.
+constexpr int kExtentRounds = 3;
+
+/// A frame whose ranges have no finite width (data near +-1e308 on both
+/// sides) cannot map data to pixels.
+Status check_drawable(const PanelFrame& f) {
+  for (const auto& [lower, upper, axis] : {std::tuple{f.x_lower, f.x_upper, "x"}, std::tuple{f.y_lower, f.y_upper, "y"}})
+    if (!(std::isfinite(upper - lower) && upper - lower > 0.0))
+      return Error{fmt::format("the data spans {} from {:g} to {:g}, too wide to draw (the width overflows a double)",
+                               axis, lower, upper)};
+  return {};
+}
+
+/// The frame of a panel, fitted to the curves themselves, and the curves
+/// flattened for it. A polyline within tau of its curve, vertices on it,
+/// fixes the curve's extent to within tau: the curve lies in the vertices'
+/// box widened by tau. So the frame is fitted to the vertices of the very
+/// polylines that are drawn (no separate coarse pass, which would miss what
+/// lies within its coarse tolerance, like the Runge polynomial's dips), and
+/// as long as tau is at most the frame's drawing tolerance (a quarter pixel),
+/// the 5 % margins (at least 25 pixels) hold that widening many times over.
+/// tau depends on the frame: the first guess fits the frame to points on the
+/// curves (their ends and a few samples, inside the true extent, so the
+/// guessed tau is at most what the fitted frame needs); the curves are
+/// flattened again when tau turns out coarser than the fitted frame needs (a
+/// guess from the control boxes), or kFinerThanNeeded times finer (samples
+/// that missed most of a curve: a denser polyline than needed).
+Expected<ResolvedPanel> resolve_panel(const Panel& panel, const Rectangle& cell, bool title_here, ProgressPart& done) {
+  const bool xl = panel.x.logarithmic, yl = panel.y.logarithmic;
+  const Bounds items = item_bounds(panel);
+  auto fitted = [&](const PanelLines& lines, double widen) {
+    Bounds b = items;
+    add_lines(lines, widen, xl, yl, b);
+    return resolve_frame(panel, cell, b, title_here);
+  };
+  if (xl || yl || (panel.curves.empty() && panel.bernstein_graphs.empty())) {
+    // No uniform pixel scale (or nothing to flatten): each curve within its
+    // own fallback tolerance, the frame fitted to the vertices.
+    auto lines = flatten_lines(panel, 0.0, done);
+    if (!lines) return lines.error();
+    const PanelFrame frame = fitted(*lines, 0.0);
+    if (auto ok = check_drawable(frame); !ok) return ok.error();
+    return ResolvedPanel{frame, std::move(*lines)};
+  }
+  auto needed_by = [&](const Bounds& b) {
+    return drawing_tolerance(resolve_frame(panel, cell, b, title_here), 0.0).distance;
+  };
+  Bounds guess = items;
+  add_points_on_curves(panel, guess);
+  if (auto ok = check_drawable(resolve_frame(panel, cell, guess, title_here)); !ok) return ok.error();
+  double tolerance = needed_by(guess);
+  bool from_hull = false;
+  for (int round = 1;; ++round) {
+    auto lines = flatten_lines(panel, tolerance, done);
+    if (!lines) {
+      // The samples can miss most of a curve (a narrow spike), making the
+      // guessed tolerance far too fine: start again from the control boxes,
+      // which hold every curve.
+      if (from_hull) return lines.error();
+      Bounds hull = items;
+      add_control_boxes(panel, hull);
+      const double coarser = needed_by(hull);
+      if (!(coarser > tolerance)) return lines.error();
+      tolerance = coarser;
+      from_hull = true;
+      continue;
+    }
+    PanelFrame frame = fitted(*lines, 0.0);
+    if (auto ok = check_drawable(frame); !ok) return ok.error();
+    double needed = drawing_tolerance(frame, 0.0).distance;
+    if (tolerance <= needed && kFinerThanNeeded * tolerance >= needed) return ResolvedPanel{frame, std::move(*lines)};
+    if (tolerance > needed && round == kExtentRounds) {
+      // Not settled: the widened vertices hold the curves, fit to them.
+      frame = fitted(*lines, tolerance);
+      if (auto ok = check_drawable(frame); !ok) return ok.error();
+      needed = drawing_tolerance(frame, 0.0).distance;
+    }
+    if (tolerance <= needed || round == kExtentRounds) {
+      auto final_lines = flatten_lines(panel, needed, done);
+      if (!final_lines) return final_lines.error();
+      return ResolvedPanel{frame, std::move(*final_lines)};
+    }
+    tolerance = needed;
+  }
+}
+
 /// Splits a data polyline into pixel runs, leaving out points a log axis cannot show.
 std::vector<std::vector<Vec2>> pixel_runs(const PanelFrame& f, const std::vector<Vec2>& points) {
   std::vector<std::vector<Vec2>> runs(1);
@@ -255,27 +450,29 @@ struct LegendEntry {
   std::optional<Color> marker;
   double marker_diameter = 0.0;
   std::optional<Color> patch;
+  MarkerShape marker_shape = MarkerShape::disc;
 };
 
 class PanelPainter {
  public:
-  PanelPainter(const Panel& panel, const PanelFrame& frame, std::vector<Shape>& out)
-      : panel_(panel), f_(frame), out_(out) {}
+  PanelPainter(const Panel& panel, const ResolvedPanel& resolved, std::vector<Shape>& out)
+      : panel_(panel), f_(resolved.frame), lines_(resolved.lines), out_(out) {}
 
-  Status paint(const std::string& title) {
+  void paint(const std::string& title) {
     grid_and_ticks();
     out_.push_back(ClipBegin{f_.area});
     for (const auto& r : panel_.regions) region(r);
     for (const auto& s : panel_.segments) segments(s);
     for (const auto& l : panel_.polylines) polyline(l.points, l.stroke, l.label);
-    for (const auto& c : panel_.curves)
-      if (auto ok = curve(c); !ok) return ok;
+    for (std::size_t i = 0; i < panel_.curves.size(); ++i)
+      polyline(lines_.curves[i], panel_.curves[i].stroke, panel_.curves[i].label);
+    for (std::size_t i = 0; i < panel_.bernstein_graphs.size(); ++i)
+      polyline(lines_.graphs[i], panel_.bernstein_graphs[i].stroke, panel_.bernstein_graphs[i].label);
     for (const auto& m : panel_.markers) markers(m);
     for (const auto& t : panel_.texts) text(t);
     out_.push_back(ClipEnd{});
     frame_and_labels(title);
     legend();
-    return {};
   }
 
  private:
@@ -320,30 +517,23 @@ class PanelPainter {
     if (!label.empty()) entries_.push_back({label, stroke, std::nullopt, 0.0, std::nullopt});
   }
 
-  Status curve(const CurveItem& c) {
-    std::vector<Vec2> points;
-    for (const auto& piece : c.pieces) {
-      const Tolerance tolerance = drawing_tolerance(f_, coarse_tolerance(piece));
-      auto line = flatten(piece, tolerance);
-      if (!line) return line.error();
-      const auto& p = line->points;
-      for (std::size_t i = 0; i < p.size(); ++i) {
-        const Vec2 v{{p[i][0], p[i][1]}};
-        if (i == 0 && !points.empty() && points.back() == v) continue;  // shared joint
-        points.push_back(v);
-      }
-    }
-    polyline(points, c.stroke, c.label);
-    return {};
-  }
-
   void markers(const MarkerItem& m) {
     for (auto& run : pixel_runs(f_, m.points))
       for (auto p : run) {
         occupied_.push_back(p);
-        out_.push_back(CircleShape{p, 0.5 * m.diameter, m.color});
+        marker(p, m.shape, m.diameter, m.color);
       }
-    if (!m.label.empty()) entries_.push_back({m.label, std::nullopt, m.color, m.diameter, std::nullopt});
+    if (!m.label.empty()) entries_.push_back({m.label, std::nullopt, m.color, m.diameter, std::nullopt, m.shape});
+  }
+
+  void marker(Vec2 p, MarkerShape shape, double diameter, Color color) {
+    const double r = 0.5 * diameter;
+    if (shape == MarkerShape::diamond) {
+      out_.push_back(PathShape{{p + Vec2{{0.0, -r}}, p + Vec2{{r, 0.0}}, p + Vec2{{0.0, r}}, p + Vec2{{-r, 0.0}}}, true,
+                               std::nullopt, color});
+    } else {
+      out_.push_back(CircleShape{p, r, color});
+    }
   }
 
   void text(const TextItem& t) {
@@ -477,8 +667,7 @@ class PanelPainter {
                                   Vec2{{x1, middle + 0.35 * size}}, Vec2{{x0, middle + 0.35 * size}}},
                                  true, std::nullopt, *e.patch});
       if (e.line) out_.push_back(PathShape{{Vec2{{x0, middle}}, Vec2{{x1, middle}}}, false, *e.line, std::nullopt});
-      if (e.marker)
-        out_.push_back(CircleShape{Vec2{{0.5 * (x0 + x1), middle}}, 0.5 * e.marker_diameter, *e.marker});
+      if (e.marker) marker(Vec2{{0.5 * (x0 + x1), middle}}, e.marker_shape, e.marker_diameter, *e.marker);
       out_.push_back(TextShape{Vec2{{x1 + gap, middle + 0.5 * text_height(size)}}, e.text, size, colors::black,
                                Anchor::start, 0.0, false});
       y += size + spacing;
@@ -487,6 +676,7 @@ class PanelPainter {
 
   const Panel& panel_;
   const PanelFrame& f_;
+  const PanelLines& lines_;
   std::vector<Shape>& out_;
   Ticks x_ticks_, y_ticks_;
   std::vector<LegendEntry> entries_;
@@ -550,6 +740,13 @@ Vec2 PanelFrame::from_pixels(Vec2 pixel) const {
   return Vec2{{value(fx, x_lower, x_upper, x_logarithmic), value(fy, y_lower, y_upper, y_logarithmic)}};
 }
 
+Status check_plotted_degree(int degree) {
+  if (degree <= kMaxPlottedCurveDegree) return {};
+  return Error{fmt::format("a curve of degree {} is beyond what a figure draws (degree <= {}: certifying its drawing "
+                           "costs O(n^2) per segment, minutes at this degree); eval --samples gives its points",
+                           degree, kMaxPlottedCurveDegree)};
+}
+
 Tolerance drawing_tolerance(const PanelFrame& frame, double fallback) {
   if (frame.x_logarithmic || frame.y_logarithmic) return Tolerance{fallback};
   const double ux = (frame.x_upper - frame.x_lower) / frame.area.width;
@@ -559,7 +756,9 @@ Tolerance drawing_tolerance(const PanelFrame& frame, double fallback) {
 
 Ticks linear_ticks(double lower, double upper, int max_count) {
   Ticks ticks;
-  if (!(upper > lower) || max_count < 1) return ticks;
+  // A range whose width overflows (refused by layout, but its margins are
+  // measured first) has no ticks.
+  if (!(upper > lower) || !std::isfinite(upper - lower) || max_count < 1) return ticks;
   // Candidate steps m * 10^e in increasing order; take the smallest that
   // gives at most max_count intervals, and a smaller one if that leaves fewer
   // than two ticks inside the range (matplotlib's min_n_ticks = 2).
@@ -625,21 +824,44 @@ double estimated_text_width(const std::string& text, double size) {
   return em * size;
 }
 
-Expected<std::vector<PanelFrame>> panel_frames(const Figure& figure) {
+namespace {
+
+/// Every panel of the figure resolved (checked first). Progress: each panel's
+/// share is its part of the figure's curves and graphs (flattening is the work).
+Expected<std::vector<ResolvedPanel>> resolve_panels(const Figure& figure, Progress progress) {
   if (auto ok = check_figure(figure); !ok) return ok.error();
   const auto cells = panel_cells(figure);
-  std::vector<PanelFrame> frames;
+  double total = 0.0;
+  for (const auto& panel : figure.panels) total += static_cast<double>(panel.curves.size() + panel.bernstein_graphs.size());
+  std::vector<ResolvedPanel> panels;
+  double begin = 0.0;
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
-    auto bounds = data_bounds(figure.panels[i]);
-    if (!bounds) return with_context(bounds.error(), fmt::format("panel {}", i));
-    frames.push_back(resolve_frame(figure.panels[i], cells[i], *bounds, !panel_title(figure, i).empty()));
+    const auto& panel = figure.panels[i];
+    const double share = total > 0.0 ? static_cast<double>(panel.curves.size() + panel.bernstein_graphs.size()) / total : 0.0;
+    const double end = i + 1 == figure.panels.size() ? 1.0 : begin + share;
+    ProgressPart done(progress, begin, end);
+    begin = end;
+    auto resolved = resolve_panel(panel, cells[i], !panel_title(figure, i).empty(), done);
+    if (!resolved && figure.panels.size() == 1) return resolved.error();  // the curve's own name says enough
+    if (!resolved) return with_context(resolved.error(), fmt::format("panel {}", i));
+    panels.push_back(std::move(*resolved));
   }
+  return panels;
+}
+
+}  // namespace
+
+Expected<std::vector<PanelFrame>> panel_frames(const Figure& figure) {
+  auto panels = resolve_panels(figure, Progress{});
+  if (!panels) return panels.error();
+  std::vector<PanelFrame> frames;
+  for (const auto& panel : *panels) frames.push_back(panel.frame);
   return frames;
 }
 
-Expected<Scene> layout(const Figure& figure) {
-  auto frames = panel_frames(figure);
-  if (!frames) return frames.error();
+Expected<Scene> layout(const Figure& figure, Progress progress) {
+  auto panels = resolve_panels(figure, progress);
+  if (!panels) return panels.error();
   Scene scene;
   scene.width = figure.width;
   scene.height = figure.height;
@@ -648,9 +870,8 @@ Expected<Scene> layout(const Figure& figure) {
     scene.shapes.push_back(TextShape{Vec2{{0.5 * figure.width, kFigureTitleSize * 1.4}}, figure.title,
                                      kFigureTitleSize, colors::black, Anchor::middle, 0.0, false});
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
-    PanelPainter painter(figure.panels[i], (*frames)[i], scene.shapes);
-    if (auto ok = painter.paint(panel_title(figure, i)); !ok)
-      return with_context(ok.error(), fmt::format("panel {}", i));
+    PanelPainter painter(figure.panels[i], (*panels)[i], scene.shapes);
+    painter.paint(panel_title(figure, i));
   }
   return scene;
 }

@@ -145,7 +145,7 @@ Expected<Panel> bernstein_basis_panel(int n, bool without_ends) {
   panel.x.label = "t";
   panel.y.label = fmt::format("B_{{{},k}}(t)", n);
   const int first = without_ends ? 1 : 0, last = without_ends ? n - 1 : n;
-  for (int k = first; k <= last; ++k) panel.curves.push_back({{bernstein_graph(n, k)}, solid(colors::black), ""});
+  for (int k = first; k <= last; ++k) panel.bernstein_graphs.push_back({n, k, solid(colors::black), ""});
   return panel;
 }
 
@@ -161,28 +161,135 @@ Expected<Figure> bernstein_basis_figure(int n, bool without_ends) {
   return figure;
 }
 
+namespace {
+
+/// The box of points in the plane (their first two coordinates; a 1D point
+/// set against x = 0), grown point by point.
+struct PlaneBox {
+  double lower[2] = {HUGE_VAL, HUGE_VAL}, upper[2] = {-HUGE_VAL, -HUGE_VAL};
+  void add(const PointArray& points) {
+    for (std::size_t i = 0; i < points.size(); ++i)
+      for (std::size_t j = 0; j < 2; ++j) {
+        const double v = j < points[i].size() ? points[i][j] : 0.0;
+        lower[j] = std::min(lower[j], v), upper[j] = std::max(upper[j], v);
+      }
+  }
+  void add(Vec2 p) {
+    for (int j = 0; j < 2; ++j) lower[j] = std::min(lower[j], p[j]), upper[j] = std::max(upper[j], p[j]);
+  }
+  void add(const PlaneBox& other) {
+    for (int j = 0; j < 2; ++j) lower[j] = std::min(lower[j], other.lower[j]), upper[j] = std::max(upper[j], other.upper[j]);
+  }
+  /// The first axis wider than kMaxPlottedWidth (or the diagonal, axis 2), or -1.
+  int overflowing_axis() const {
+    for (int j = 0; j < 2; ++j)
+      if (lower[j] <= upper[j] && !(upper[j] - lower[j] <= kMaxPlottedWidth)) return j;
+    const bool empty = !(lower[0] <= upper[0]);
+    return !empty && !(std::hypot(upper[0] - lower[0], upper[1] - lower[1]) <= kMaxPlottedWidth) ? 2 : -1;
+  }
+};
+
+/// The control points of a curve model, as a box.
+PlaneBox control_box_of(const Model& model) {
+  PlaneBox box;
+  if (const auto* c = std::get_if<BezierCurve>(&model)) box.add(c->control_points());
+  if (const auto* p = std::get_if<PiecewiseBezierCurve>(&model))
+    for (const auto& piece : p->pieces()) box.add(piece.control_points());
+  if (const BSplineCurve* b = bspline_in(model)) box.add(b->control_points());
+  return box;
+}
+
+/// An error, "<subject> span(s) ...", when the box is too wide for a figure:
+/// every item drawn from it (curve, polygon, comb teeth sized by its diagonal)
+/// lies in it or near it, and the figure's ranges must stay finite.
+Status check_plottable(const PlaneBox& box, const std::string& subject) {
+  const int axis = box.overflowing_axis();
+  if (axis < 0) return {};
+  if (axis == 2)
+    return Error{fmt::format("{} x from {:g} to {:g} and y from {:g} to {:g}, too wide to plot (a figure shows a "
+                             "diagonal of at most {:.2g})",
+                             subject, box.lower[0], box.upper[0], box.lower[1], box.upper[1], kMaxPlottedWidth)};
+  return Error{fmt::format("{} {} from {:g} to {:g}, too wide to plot (a figure shows a width of at most {:.2g})",
+                           subject, axis == 0 ? "x" : "y", box.lower[axis], box.upper[axis], kMaxPlottedWidth)};
+}
+
+}  // namespace
+
+Status check_plottable_extent(const std::vector<Vec2>& points, const std::string& subject) {
+  PlaneBox box;
+  for (auto p : points) box.add(p);
+  return check_plottable(box, subject);
+}
+
+namespace {
+
+/// Gives every curve item from `first` on the source name layout errors use.
+void name_curves(Panel& panel, std::size_t first, const std::string& name) {
+  for (std::size_t i = first; i < panel.curves.size(); ++i) panel.curves[i].source = name;
+}
+
+}  // namespace
+
 Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotOptions& options) {
   if (sources.empty()) return Error{"nothing to plot: give at least one input"};
   std::size_t curve_count = 0;
   for (const auto& source : sources) curve_count += source.models.size();
+  // Each file's extent on its own, then all together (two files may each be
+  // fine and overflow side by side).
+  PlaneBox all;
+  std::vector<PlaneBox> boxes;
+  for (const auto& source : sources) {
+    PlaneBox box;
+    if (source.models.empty()) box.add(source.points);
+    for (std::size_t m = 0; m < source.models.size(); ++m) {
+      const PlaneBox model_box = control_box_of(source.models[m]);
+      const std::string name = source.models.size() == 1 ? source.name : fmt::format("{}[{}]", source.name, m);
+      if (auto ok = check_plottable(model_box, name + ": the points span"); !ok) return ok.error();
+      box.add(model_box);
+    }
+    if (auto ok = check_plottable(box, source.name + ": the points span"); !ok) return ok.error();
+    all.add(box);
+    boxes.push_back(box);
+  }
+  if (const int axis = all.overflowing_axis(); axis >= 0) {
+    const int j = axis == 2 ? 0 : axis;
+    std::size_t low = 0, high = 0;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+      if (boxes[i].lower[j] < boxes[low].lower[j]) low = i;
+      if (boxes[i].upper[j] > boxes[high].upper[j]) high = i;
+    }
+    return check_plottable(all, fmt::format("{} and {} together span", sources[low].name, sources[high].name)).error();
+  }
   Panel panel = geometry_panel_for_plot();
   std::optional<int> first_degree;
   std::optional<std::vector<double>> first_knots;  // the first curve's knots when it is a B-spline
   bool first_rational = false;
+  std::string first_name;
   std::string title;
   int color_index = 0;
+  // Data points go beneath every other marker: larger diamonds, so that a
+  // control point on a data point (an interpolant's) shows both.
+  std::vector<MarkerItem> data;
   for (const auto& source : sources) {
     title += (title.empty() ? "" : ", ") + source.name;
     if (source.models.empty()) {
-      panel.markers.push_back({plane_points(source.points), curve_count == 0 && sources.size() == 1 ? colors::red
-                                                                                                  : cycle_color(color_index),
-                               6.0 * kPixelsPerPoint, sources.size() > 1 ? source.name : ""});
-      ++color_index;
+      // Data: diamonds (control points are discs), named as data beside curves.
+      const Color color = cycle_color(color_index++);
+      const auto points = plane_points(source.points);
+      const bool named = sources.size() > 1 || curve_count > 0;
+      if (source.polyline)
+        panel.polylines.push_back({points, solid(color, 1.0), named ? source.name + " (polyline)" : ""});
+      if (source.markers || !source.polyline)
+        data.push_back({points, color, 9.0 * kPixelsPerPoint, named ? source.name + " (data points)" : "",
+                        MarkerShape::diamond});
       continue;
     }
     for (std::size_t m = 0; m < source.models.size(); ++m) {
       const std::string name = source.models.size() == 1 ? source.name : fmt::format("{}[{}]", source.name, m);
+      const std::size_t first_curve = panel.curves.size();
+      if (first_name.empty()) first_name = name;
       if (const BSplineCurve* spline = bspline_in(source.models[m])) {
+        if (auto ok = check_plotted_degree(spline->degree()); !ok) return with_context(ok.error(), name);
         const Interval domain = spline->domain();
         if (options.bezier.construction && !domain.contains(*options.bezier.construction))
           return Error{fmt::format("--construction {} is outside the domain [{}, {}] of {}", *options.bezier.construction,
@@ -196,6 +303,7 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
         const Color color = curve_count == 1 ? colors::black : cycle_color(color_index++);
         if (auto ok = add_bspline(panel, *spline, spline_options, color, curve_count == 1 ? "" : name); !ok)
           return with_context(ok.error(), name);
+        name_curves(panel, first_curve, name);
         if (!first_degree) {
           first_degree = spline->degree();
           first_knots = std::vector<double>(spline->knots().begin(), spline->knots().end());
@@ -206,6 +314,8 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
       std::vector<BezierCurve> pieces;
       if (const auto* curve = std::get_if<BezierCurve>(&source.models[m])) pieces.push_back(*curve);
       else pieces = std::get<PiecewiseBezierCurve>(source.models[m]).pieces();
+      for (const auto& piece : pieces)
+        if (auto ok = check_plotted_degree(piece.degree()); !ok) return with_context(ok.error(), name);
       const Interval domain = domain_of(source.models[m]);
       std::optional<std::pair<int, double>> construction;
       if (options.bezier.construction) {
@@ -240,15 +350,17 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
           }
         }
       }
+      name_curves(panel, first_curve, name);
     }
   }
+  panel.markers.insert(panel.markers.begin(), data.begin(), data.end());
   Figure figure;
   figure.title = title;
   figure.width = 900;
   figure.height = 700;
   if (options.basis && first_degree && first_knots) {
     auto basis = bspline_basis_panel(*first_knots, *first_degree);
-    if (!basis) return basis.error();
+    if (!basis) return with_context(basis.error(), "--basis of " + first_name);
     basis->title = fmt::format("B-spline basis N_(i,{}), knots {}{}", *first_degree, knots_text(*first_knots),
                                first_rational ? " (without the weights)" : "");
     figure.height = 1200;
@@ -256,7 +368,7 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
     figure.panels.push_back(std::move(*basis));
   } else if (options.basis && first_degree) {
     auto basis = bernstein_basis_panel(std::max(*first_degree, 1));
-    if (!basis) return basis.error();
+    if (!basis) return with_context(basis.error(), "--basis of " + first_name);
     basis->title = fmt::format("Bernstein basis of degree {}", std::max(*first_degree, 1));
     figure.height = 1200;
     figure.panels.push_back(std::move(panel));

@@ -109,21 +109,23 @@ void add_net(Panel& panel, const ControlNet& net, const ViewAngles& view, const 
   }
 }
 
+/// The control points of a surface: its net's, or a Coons patch's boundaries'.
+std::vector<const PointArray*> control_point_sets(const Model& model) {
+  if (const auto* s = std::get_if<BSplineSurface>(&model)) return {&s->control_net().points()};
+  if (const auto* s = std::get_if<BezierSurface>(&model)) return {&s->control_net().points()};
+  if (const auto* p = std::get_if<CoonsPatch>(&model))
+    return {&p->u0().control_points(), &p->u1().control_points(), &p->v0().control_points(), &p->v1().control_points()};
+  return {};
+}
+
 /// The corners of the bounding box of every control point of a surface.
 void extend_box(const Model& model, std::array<double, 3>& low, std::array<double, 3>& high) {
-  const auto add = [&](const PointArray& points) {
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      for (std::size_t c = 0; c < 3 && c < points[k].size(); ++c) {
-        low[c] = std::min(low[c], points[k][c]);
-        high[c] = std::max(high[c], points[k][c]);
+  for (const PointArray* points : control_point_sets(model))
+    for (std::size_t k = 0; k < points->size(); ++k)
+      for (std::size_t c = 0; c < 3 && c < (*points)[k].size(); ++c) {
+        low[c] = std::min(low[c], (*points)[k][c]);
+        high[c] = std::max(high[c], (*points)[k][c]);
       }
-    }
-  };
-  if (const auto* s = std::get_if<BSplineSurface>(&model)) add(s->control_net().points());
-  if (const auto* s = std::get_if<BezierSurface>(&model)) add(s->control_net().points());
-  if (const auto* p = std::get_if<CoonsPatch>(&model)) {
-    for (const BSplineCurve* c : {&p->u0(), &p->u1(), &p->v0(), &p->v1()}) add(c->control_points());
-  }
 }
 
 }  // namespace
@@ -287,12 +289,20 @@ Expected<Figure> surface_plot_figure(const std::vector<PlotSource>& sources, con
   lines.equal_aspect = true;
   lines.grid = all_plane;
   for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    std::vector<Vec2> projected_points;
+    for (const PointArray* points : control_point_sets(*surfaces[k].second))
+      for (std::size_t i = 0; i < points->size(); ++i) projected_points.push_back(project(options.view, (*points)[i]));
+    if (auto ok = check_plottable_extent(projected_points, surfaces[k].first + ": the projected control points span"); !ok)
+      return ok.error();
     const Color color = surfaces.size() == 1 ? colors::black : cycle_color(static_cast<int>(k));
+    const std::size_t first_curve = lines.curves.size();
     if (auto ok = add_surface_wireframe(lines, *surfaces[k].second, options, color,
                                         surfaces.size() == 1 ? "" : surfaces[k].first);
         !ok) {
       return with_context(ok.error(), surfaces[k].first);
     }
+    // Layout errors about its iso-curves name the surface.
+    for (std::size_t i = first_curve; i < lines.curves.size(); ++i) lines.curves[i].source = surfaces[k].first;
   }
   Figure figure;
   figure.width = 900;

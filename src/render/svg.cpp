@@ -128,8 +128,8 @@ class SvgWriter {
 
 std::string svg_document(const Scene& scene) { return SvgWriter{}.document(scene); }
 
-Status write_svg(const Figure& figure, const std::filesystem::path& path) {
-  auto scene = layout(figure);
+Status write_svg(const Figure& figure, const std::filesystem::path& path, Progress progress) {
+  auto scene = layout(figure, progress);
   if (!scene) return scene.error();
   return write_file_atomically(path, svg_document(*scene));
 }

@@ -50,6 +50,36 @@ RC_GTEST_PROP(Segment, ReproducesTheCurveOnItsInterval, ()) {
   }
 }
 
+TEST(Segment, HighDegreeReversedAndExtrapolatedPieces) {
+  // Two subdivisions, O(n^2): at degree 1000 a piece costs about as much as
+  // three evaluations (one blossom per control point cost O(n^3), a billion
+  // steps here). Reference: point_at on the whole curve, at every kind of
+  // interval: forward, reversed, from or to 0, a single point, outside [0, 1].
+  std::vector<double> coordinates;
+  for (int i = 0; i <= 1000; ++i) coordinates.insert(coordinates.end(), {std::cos(0.37 * i), std::sin(0.91 * i)});
+  const auto curve = BezierCurve::make(PointArray::make(2, std::move(coordinates)).value()).value();
+  const double pieces[][2] = {{0.2, 0.3}, {0.7, 0.25}, {0.0, 0.01}, {0.99, 1.0}, {0.0, 0.0}, {0.4, 0.4}, {1.0, 0.0}};
+  for (const auto& [t0, t1] : pieces) {
+    const auto piece = segment(curve, t0, t1);
+    ASSERT_EQ(piece.degree(), 1000);
+    for (int i = 0; i <= 8; ++i) {
+      const double u = i / 8.0;
+      EXPECT_LE(max_distance(point_at(piece, u), point_at(curve, t0 + (t1 - t0) * u)), 1e-12) << t0 << " " << t1;
+    }
+  }
+  // A cubic, and a rational quadratic (a quarter circle: weights positive beyond [0, 1] too).
+  const auto cubic = BezierCurve::make(PointArray::make({{0, 0}, {1, 2}, {3, 2}, {4, 0}}).value()).value();
+  const auto arc = BezierCurve::make(PointArray::make({{1, 0}, {1, 1}, {0, 1}}).value(), {1.0, std::sqrt(0.5), 1.0}).value();
+  for (const auto* c : {&cubic, &arc})
+    for (const auto& [t0, t1] : {std::pair{-0.5, 1.5}, std::pair{1.2, -0.3}, std::pair{-1.0, 0.0}, std::pair{1.1, 1.3}}) {
+      const auto piece = segment(*c, t0, t1);
+      for (int i = 0; i <= 8; ++i) {
+        const double u = i / 8.0;
+        EXPECT_LE(max_distance(point_at(piece, u), point_at(*c, t0 + (t1 - t0) * u)), 1e-12) << t0 << " " << t1;
+      }
+    }
+}
+
 RC_GTEST_PROP(Reversed, TraversesBackwards, ()) {
   const auto curve = *test::any_bezier_curve(10);
   const double t = *test::unit_parameter();

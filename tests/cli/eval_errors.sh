@@ -25,7 +25,7 @@ expect_error "mixed dimensions" "mixed.json, control_points[1]: 3 coordinates, b
 model empty.json '{"type": "bezier", "control_points": []}'
 expect_error "empty polygon" "empty.json, control_points: the control polygon is empty" eval "$work/empty.json" --at 0
 model weight.json '{"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [1, -2]}'
-expect_error "negative weight" "weight.json, weights[1]: the weight -2 is not > 0" eval "$work/weight.json" --at 0
+expect_error "negative weight" "weight.json, weights: weight 1" eval "$work/weight.json" --at 0
 model weights.json '{"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [1, 1, 1]}'
 expect_error "weights count" "weights.json, weights: 3 weights for 2 control points" eval "$work/weights.json" --at 0
 model newline.json '{"type": "bez

@@ -114,6 +114,27 @@ expect_error "x not increasing with --function" "x must increase strictly" \
 expect_error "degree 0" "--degree: 0 is outside 1.." fit "$work/line.csv" --degree 0 --control-points 2
 expect_error "tolerance not reached" "the tolerance 1e-300 is not reached" \
   fit "$examples/head.csv" --degree 3 --tolerance 1e-300
+# One column is no plane or space curve (issue 15's neighbour of hermite's columns).
+printf 'y\n0\n1\n4\n9\n16\n' > "$work/column.csv"
+expect_error "one column" "column.csv: fit approximates points of 2 or more columns (x,y or x,y,z), got 1 column" \
+  fit "$work/column.csv" --degree 2 --control-points 3
+# λ far outside the data's scale λ₀ = tr(BᵀB)/tr(Ω) (issue 15: "normal equations are
+# singular" said nothing of λ): 200 noisy points of a sine, the noise seeded.
+awk 'BEGIN { srand(15); for (i = 0; i < 200; ++i) printf "%.17g,%.17g\n", i / 199, sin(6 * i / 199) + 0.05 * (rand() - 0.5) }' \
+  > "$work/noisy.csv"
+expect_error "lambda too large" \
+  "noisy.csv: the smoothing λ = 1e+308 is too large for these data: λ·tr(Ω) outweighs tr(BᵀB) by about 10^" \
+  fit "$work/noisy.csv" --degree 3 --smoothing 1e308 --free-ends
+expect_error "lambda too large names the meaningful range" "towards a straight line) is the range GCV searches here" \
+  fit "$work/noisy.csv" --degree 3 --smoothing 1e308
+expect_error "lambda too small for knots at every parameter" \
+  "the smoothing λ = 1e-308 is too small for these data: λ·tr(Ω) is about 10^" \
+  fit "$work/noisy.csv" --degree 3 --smoothing 1e-308
+run_fit "tiny lambda with fewer control points than points" "$work/noisy.csv" --degree 3 --smoothing 1e-308 \
+  --control-points 10 -o "$work/tiny.json"
+expect_error "lambda infinite" "--smoothing: 'inf' is infinite" fit "$work/noisy.csv" --degree 3 --smoothing inf
+expect_error "lambda NaN" "--smoothing: 'nan' is NaN" fit "$work/noisy.csv" --degree 3 --smoothing nan
+expect_error "lambda overflows" "--smoothing: '1e309' overflows" fit "$work/noisy.csv" --degree 3 --smoothing 1e309
 # Nothing is written on bad input.
 printf 'keep' > "$work/keep.json"
 expect_error "bad input leaves -o alone" "needs at least 4 points" \

@@ -10,8 +10,19 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 check() { if ! eval "$2"; then echo "FAIL: $1"; failures=$((failures + 1)); fi; }
 
-"$casteljau" gallery "$work/gallery" --examples "$examples" >"$work/stdout" 2>"$work/stderr"
-check "gallery exits 0 with nothing on stderr" '[ ! -s "$work/stderr" ]'
+# CASTELJAU_PROGRESS=always forces the progress line "casteljau gallery: N %"
+# into this pipe once the work has run for a second (cli/progress.hpp):
+# stderr holds that line, rewritten in place, and nothing else.
+start=$(date +%s%N)
+CASTELJAU_PROGRESS=always "$casteljau" gallery "$work/gallery" --examples "$examples" >"$work/stdout" 2>"$work/stderr"
+elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+check "gallery exits 0 with only progress lines on stderr" \
+  '! tr "\r" "\n" <"$work/stderr" | sed "s/\x1b\[K//g" | grep -v "^$" | grep -qvE "^casteljau gallery: [0-9]+ %$"'
+if [ "$elapsed_ms" -ge 1500 ]; then
+  check "gallery ($elapsed_ms ms): a 'casteljau gallery: N %' line" 'grep -qE "casteljau gallery: [0-9]+ %" "$work/stderr"'
+else
+  echo "note: the gallery took $elapsed_ms ms, under the second before a progress line shows"
+fi
 check "index.html written" '[ -s "$work/gallery/index.html" ]'
 
 # Every src= and href= target of index.html (relative links only).
@@ -43,6 +54,26 @@ done
 # No temporary files left behind.
 check "no temporary files" '[ -z "$(find "$work/gallery" -name ".*tmp*")" ]'
 
+# Without CASTELJAU_PROGRESS, nothing on a pipe: the same gallery again, the
+# same stdout and an empty stderr. Under AddressSanitizer the gallery costs
+# about 50 s of CPU: a sanitizer build (the binary links libasan) renders it
+# once, above.
+if ldd "$casteljau" 2>/dev/null | grep -q libasan; then
+  echo "note: skipped under the sanitizer: the gallery without progress"
+else
+  "$casteljau" gallery "$work/gallery_quiet" --examples "$examples" >"$work/stdout_q" 2>"$work/stderr_q"
+  check "gallery without CASTELJAU_PROGRESS: nothing on stderr" '[ ! -s "$work/stderr_q" ]'
+  check "gallery without CASTELJAU_PROGRESS: the same stdout" \
+    '[ "$(sed "s/gallery_quiet/gallery/" "$work/stdout_q")" = "$(cat "$work/stdout")" ]'
+fi
+
+# gallery --help lists every section of the gallery, not only its Bézier figures
+# (read with line breaks and indents squeezed: help is wrapped to the terminal).
+"$casteljau" gallery --help >"$work/help"
+for section in "01-16 Bézier curves" "17-22 B-splines and NURBS" "23-29 interpolation" "30-34 surfaces"; do
+  check "gallery --help lists '$section'" 'tr -s " \n" "  " <"$work/help" | grep -qF "$section"'
+done
+
 # A folder that cannot be created: exit 2, one line, nothing written.
 touch "$work/file"
 set +e
@@ -61,6 +92,6 @@ check "missing examples exits 2 (got $status)" '[ "$status" -eq 2 ]'
 check "missing examples: one line naming notebook_polygon.csv" '[ "$(wc -l <"$work/err3")" -eq 1 ] && grep -q "notebook_polygon.csv" "$work/err3"'
 check "missing examples: no gallery files" '[ -z "$(ls -A "$work/g2" 2>/dev/null)" ]'
 
-checks=$((count + 5 * $(ls "$work"/gallery/*.svg | wc -l) + 16))
+checks=$((count + 5 * $(ls "$work"/gallery/*.svg | wc -l) + 23))
 echo "$((checks - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -224,10 +224,44 @@ expect_error "decreasing x" "x must increase strictly: point 2 has x = 1, point 
   interpolate "$work/x_decreases.csv" --method lagrange --function
 expect_error "--function with --param" "--function takes x" \
   interpolate "$work/x_decreases.csv" --method natural --function --param chord
-# Hermite needs the point then its tangent: an odd column count cannot be split.
+# Each method says what it reads (issue 15): hermite a point then its tangent, 2d columns
+# with d >= 2 (the head's x,y alone once gave a 1-D curve with y as tangents).
+hermite_columns="hermite reads points and tangents: 2d columns (x,y,dx,dy in 2D, x,y,z,dx,dy,dz in 3D)"
+expect_error "hermite with points only" "head.csv: $hermite_columns, got 2 columns" \
+  interpolate "$examples/head.csv" --method hermite
 printf 'x,y,z\n0,0,0\n1,1,1\n' >"$work/odd.csv"
-expect_error "hermite with an odd number of columns" "odd.csv: hermite needs 2d columns (the point, then its tangent: x,y,dx,dy), got 3" \
+expect_error "hermite with an odd number of columns" "odd.csv: $hermite_columns, got 3 columns" \
   interpolate "$work/odd.csv" --method hermite
+# One column is no plane or space curve, for every method; --function needs x and y.
+printf 'x\n0\n1\n2\n3\n4\n' >"$work/column.csv"
+expect_error "hermite with one column" "column.csv: $hermite_columns, got 1 column" \
+  interpolate "$work/column.csv" --method hermite
+for method in c1-bezier catmull-rom cubic bspline lagrange natural; do
+  expect_error "$method with one column" \
+    "column.csv: $method interpolates points of 2 or more columns (x,y or x,y,z), got 1 column" \
+    interpolate "$work/column.csv" --method "$method"
+done
+for method in cubic bspline lagrange natural; do
+  expect_error "$method --function with one column" \
+    "column.csv: a function y(x) needs at least 2 columns (x and y), got 1" \
+    interpolate "$work/column.csv" --method "$method" --function
+done
+# A closed curve needs 3 points: each closed method says so.
+printf 'x,y,dx,dy\n0,0,1,0\n1,1,0,1\n' >"$work/two_tangents.csv"
+expect_error "closed c1-bezier with 2 points" "two.csv: a closed c1-bezier curve needs at least 3 points, got 2" \
+  interpolate "$work/two.csv" --method c1-bezier --closed
+expect_error "closed catmull-rom with 2 points" \
+  "two.csv: a closed Catmull-Rom spline needs at least 3 points, got 2" \
+  interpolate "$work/two.csv" --method catmull-rom --closed
+expect_error "closed cubic with 2 points" \
+  "two.csv: cubic interpolation with periodic ends needs at least 3 points, got 2" \
+  interpolate "$work/two.csv" --method cubic --closed
+expect_error "closed hermite with 2 points" \
+  "two_tangents.csv: a closed Hermite interpolation needs at least 3 points, got 2" \
+  interpolate "$work/two_tangents.csv" --method hermite --closed
+expect_error "bspline degree 3 with 2 points" \
+  "two.csv: degree-3 B-spline interpolation needs at least 4 points, got 2" \
+  interpolate "$work/two.csv" --method bspline
 expect_error "missing file" "cannot open" interpolate "$work/nowhere.csv" --method cubic
 # Nothing is written on error.
 "$casteljau" interpolate "$work/duplicate.csv" --method cubic --param chord -o "$work/never.json" 2>/dev/null

@@ -55,6 +55,8 @@ expect_figure "$work/a.png" "$png" plot "$work/curve.json" "$examples/semicircle
 expect_figure "$work/a.pdf" "$pdf" plot "$examples/spiral_10.csv" -o "$work/a.pdf" --points --tangents
 expect_figure "$work/b.svg" "$svg" plot "$work/pieces.json" -o "$work/b.svg" --construction 1.5 --tangents
 expect_figure "$work/c.svg" "$svg" plot "$examples/head.csv" --points-only -o "$work/c.svg"
+# --points-only (the older name of --data-points) is no longer refused beside model JSON.
+expect_figure "$work/c.svg" "$svg" plot "$work/curve.json" "$examples/head.csv" --points-only -o "$work/c.svg"
 expect_figure "$work/d.png" "$png" bernstein 20 -o "$work/d.png" --without-ends
 expect_figure "$work/d.pdf" "$pdf" bernstein 3 -o "$work/d.pdf"
 # A construction drawn with the right point: C(0.5) = (2.25, 1.5) in the legend.
@@ -82,7 +84,6 @@ printf '{"type": "bezier", "control_points": [[0,0],[1,"a"]]}\n' >"$work/bad.jso
 expect_error "$work/x.svg" plot "$work/bad.json" -o "$work/x.svg"
 printf 'x,y\n0,0\n1,abc\n' >"$work/bad.csv"
 expect_error "$work/x.png" plot "$work/bad.csv" -o "$work/x.png"
-expect_error "$work/x.svg" plot "$work/curve.json" --points-only -o "$work/x.svg"
 expect_error "$work/x.svg" bernstein 0 -o "$work/x.svg"
 expect_error "$work/x.svg" bernstein -3 -o "$work/x.svg"
 expect_error "$work/x.svg" bernstein 2.5 -o "$work/x.svg"

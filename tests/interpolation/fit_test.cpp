@@ -417,7 +417,7 @@ TEST(FitToTolerance, RefusesATolerancePastRounding) {
 
 // --- the banded factorization ------------------------------------------------------
 
-TEST(SymmetricBand, SolvesAndInvertsLikeDenseLdlt) {
+TEST(SymmetricBand, SolvesAndTracesTheInverseLikeDenseLdlt) {
   test::SplitMix random{42};
   for (int p = 1; p <= 5; ++p) {
     for (std::size_t n : {std::size_t(1), std::size_t(2), std::size_t(7), std::size_t(30)}) {
@@ -440,17 +440,23 @@ TEST(SymmetricBand, SolvesAndInvertsLikeDenseLdlt) {
       band.solve(x, 3);
       const Eigen::MatrixXd expected = dense.ldlt().solve(rhs);
       const Eigen::MatrixXd inverse = dense.inverse();
-      const detail::SymmetricBand z = band.inverse_band();
       for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t c = 0; c < 3; ++c) {
           EXPECT_NEAR(x[i * 3 + c], expected(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)), 1e-13);
         }
-        for (std::size_t j = z.first_column(i); j <= i; ++j) {
-          EXPECT_NEAR(z.at(i, j), inverse(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)), 1e-13);
+      }
+      // tr(A⁻¹ E) for E with a single band entry (i, j) set to 1 (and its mirror) is z_ii, or
+      // 2 z_ij off the diagonal: every entry of the band of the inverse, against the dense inverse.
+      for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = band.first_column(i); j <= i; ++j) {
+          detail::SymmetricBand unit(n, p);
+          unit.at(i, j) = 1.0;
+          const double entry = inverse(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+          EXPECT_NEAR(band.trace_of_inverse_times(unit), i == j ? entry : 2.0 * entry, 1e-13);
         }
       }
       // tr(A⁻¹ A) = n from the band alone.
-      EXPECT_NEAR(z.trace_of_product(original), static_cast<double>(n), 1e-12 * static_cast<double>(n));
+      EXPECT_NEAR(band.trace_of_inverse_times(original), static_cast<double>(n), 1e-12 * static_cast<double>(n));
     }
   }
 }
@@ -539,6 +545,66 @@ TEST(FitSmoothing, GcvChoiceIsTheSameInAnyUnitOfX) {
         << length;
     EXPECT_NEAR(fit->rms_error, reference->rms_error, 1e-6) << length;
   }
+}
+
+// Issue 15: --smoothing 1e308 answered "normal equations are singular". A λ
+// whose penalty swamps the data (free ends: Ω alone is singular on lines) is
+// called too large, a λ too small to determine m + p control points from m + 1
+// points too small; both name the range GCV searches. λ₀ = tr(BᵀB)/tr(Ω).
+TEST(FitSmoothing, ALambdaThatMakesTheSystemSingularIsCalledTooLargeOrTooSmall) {
+  std::vector<double> t;
+  const PointArray points = noisy_sine(80, 7, t);
+  SmoothingOptions options;
+  options.smoothing = 1e308;
+  const std::string large = error_of(fit_smoothing(points, t, options));
+  EXPECT_EQ(large.find("the smoothing λ = 1e+308 is too large for these data: λ·tr(Ω) outweighs tr(BᵀB) by about "
+                       "10^"),
+            0u)
+      << large;
+  EXPECT_NE(large.find("(heavily smoothed, towards a straight line) is the range GCV searches here (λ₀·10^-10 to "
+                       "λ₀·10^6, λ₀ = tr(BᵀB)/tr(Ω) = "),
+            std::string::npos)
+      << large;
+  EXPECT_NE(large.find("): give a λ there, or let GCV choose it"), std::string::npos) << large;
+  options.smoothing = 1e-308;
+  const std::string small = error_of(fit_smoothing(points, t, options));
+  EXPECT_EQ(small.find("the smoothing λ = 1e-308 is too small for these data: λ·tr(Ω) is about 10^"), 0u) << small;
+  EXPECT_NE(small.find("too little to determine 82 control points from 80 points"), std::string::npos) << small;
+  options.control_point_count = 10;  // fewer control points than points: a tiny λ is least squares
+  EXPECT_TRUE(fit_smoothing(points, t, options).has_value());
+}
+
+/// Records what a computation reports to its Progress.
+struct Reports {
+  std::vector<double> fractions;
+  Progress callback() {
+    return Progress{[](void* self, double f) { static_cast<Reports*>(self)->fractions.push_back(f); }, this};
+  }
+  /// Non-decreasing in [0, 1], ending at 1, at most a few hundred.
+  void expect_sound(std::size_t at_least) const {
+    ASSERT_GE(fractions.size(), at_least);
+    EXPECT_LE(fractions.size(), 300u);
+    EXPECT_EQ(fractions.back(), 1.0);
+    for (std::size_t i = 0; i < fractions.size(); ++i) {
+      EXPECT_GE(fractions[i], 0.0);
+      EXPECT_LE(fractions[i], 1.0);
+      if (i > 0) {
+        EXPECT_GE(fractions[i], fractions[i - 1]) << i;
+      }
+    }
+  }
+};
+
+// Fits of 10⁶ points take seconds (GCV, a tolerance near the noise): they say how far they are.
+TEST(FitProgress, GcvAndToleranceReportNonDecreasingFractionsEndingAtOne) {
+  std::vector<double> t;
+  const PointArray points = noisy_sine(200, 11, t);
+  Reports gcv;
+  ASSERT_TRUE(fit_smoothing(points, t, SmoothingOptions{}, gcv.callback()).has_value());
+  gcv.expect_sound(60);  // one report per GCV evaluation (the grid alone has 65)
+  Reports tolerance;
+  ASSERT_TRUE(fit_to_tolerance(points, t, 3, Tolerance{0.06}, FitEnds::interpolated, tolerance.callback()));
+  tolerance.expect_sound(1);
 }
 
 }  // namespace

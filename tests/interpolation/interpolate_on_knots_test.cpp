@@ -395,7 +395,7 @@ TEST(FitLeastSquaresOnKnots, BadInputNamesTheProblem) {
   EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3,
                                                 {0, 0, 0, 0, 5.05, 5.1, 5.15, 5.2, 5.25, 29.0 / 3, 29.0 / 3, 29.0 / 3,
                                                  29.0 / 3})),
-            "no point of positive weight is left for basis function 4 (support [5.05, 5.25)): the knots and "
+            "no point is left for basis function 4 (support [5.05, 5.25)): the knots and "
             "parameters violate the Schoenberg–Whitney condition, the fit's normal equations are singular");
   // Zero weights on the right half leave the last basis function without a point.
   std::vector<double> half(30, 1.0);

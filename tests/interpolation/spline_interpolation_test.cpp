@@ -349,11 +349,11 @@ TEST(InterpolateCubic, RefusesBadInput) {
   const auto one = PointArray::from_trusted(2, {0, 0});
   const auto three = PointArray::from_trusted(2, {0, 0, 1, 1, 2, 0});
   EXPECT_EQ(message(interpolate_cubic(one, std::vector<double>{0}, natural)),
-            "1 point, cubic interpolation with natural ends needs at least 2");
+            "cubic interpolation with natural ends needs at least 2 points, got 1");
   EXPECT_EQ(message(interpolate_cubic(three, std::vector<double>{0, 1, 2}, not_a_knot)),
-            "3 points, cubic interpolation with not-a-knot ends needs at least 4");
+            "cubic interpolation with not-a-knot ends needs at least 4 points, got 3");
   EXPECT_EQ(message(interpolate_cubic(PointArray::from_trusted(2, {0, 0, 1, 1}), std::vector<double>{0, 1, 2}, periodic)),
-            "2 points, cubic interpolation with periodic ends needs at least 3");
+            "cubic interpolation with periodic ends needs at least 3 points, got 2");
   EXPECT_EQ(message(interpolate_cubic(three, std::vector<double>{0, 1, 2}, periodic)),
             "3 parameter values for 3 points, cubic interpolation with periodic ends needs 4");
   EXPECT_EQ(message(interpolate_cubic(three, std::vector<double>{0, 1}, natural)),
@@ -462,7 +462,7 @@ TEST(InterpolateBSpline, RefusesBadInput) {
   const auto message = [](const Expected<BSplineCurve>& e) { return e ? std::string("(accepted)") : e.error().message; };
   EXPECT_EQ(message(interpolate_bspline(kPoints, kT, 0)), "degree 0 is outside 1..10000 for B-spline interpolation");
   EXPECT_EQ(message(interpolate_bspline(kPoints, kT, 7)),
-            "7 points, degree-7 interpolation with 0 end derivatives needs at least 8");
+            "degree-7 B-spline interpolation needs at least 8 points, got 7");
   const std::vector<EndDerivative> order_four{{false, 4, {0, 0}}};
   EXPECT_EQ(message(interpolate_bspline(kPoints, kT, 3, order_four)),
             "end derivative 0 has order 4, orders must be in 1..3 for degree 3");

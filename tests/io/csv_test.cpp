@@ -108,6 +108,61 @@ TEST(PointsCsv, RefusesAFileWithoutPoints) {
   EXPECT_EQ(error_of("# c\nx,y\n# header only\n"), "p.csv: no points after the header row on line 2");
 }
 
+// Separators (docs/formats.md, "Point sets"): the first row chooses ',', ';'
+// or tab; the decimal mark is always '.'. The reference is the same points
+// written with ',' and '.'.
+TEST(PointsCsv, ReadsSemicolonAndTabSeparatedFilesWithOrWithoutAHeader) {
+  const PointArray head = points(2, {9.5, 5, 5.5, 5, 1, 7});
+  EXPECT_EQ(parse("x;y\n9.5;5\n5.5;5\n1;7\n"), head);
+  EXPECT_EQ(parse("# seed 000\n9.5 ; 5\r\n5.5;5\n\n1;7"), head);
+  EXPECT_EQ(parse("x\ty\n9.5\t5\n5.5\t5\n1\t7\n"), head);
+  EXPECT_EQ(parse("9.5\t5\n 5.5\t5\t\n1\t7\n"), head);  // blanks around the row are not fields
+  EXPECT_EQ(parse("x,y\n9.5,\t5\n5.5\t,5\n1,7\n"), head);  // tabs beside ',' stay blanks
+  EXPECT_EQ(parse("t;u;v\n1;2;3\n"), points(3, {1, 2, 3}));
+}
+
+TEST(PointsCsv, RefusesDecimalCommasAndSaysHowToConvert) {
+  // As the seeds print numbers: A(-3;0), 9,5.
+  const std::string hint =
+      "uses ',' as the decimal mark; casteljau reads '.' as the decimal mark, and ',', ';' or tabs between values "
+      "(convert with: sed 's/,/./g')";
+  EXPECT_EQ(error_of("x;y\n9,5;5\n"), "p.csv, line 2, field 1: '9,5' " + hint);
+  EXPECT_EQ(error_of("9,5;5,5\n"), "p.csv, line 1, field 1: '9,5' " + hint);  // not a header
+  EXPECT_EQ(error_of("9;5\n5;-0,5\n"), "p.csv, line 2, field 2: '-0,5' " + hint);
+  EXPECT_EQ(error_of("x\ty\n9,5\t5\n"), "p.csv, line 2, field 1: '9,5' " + hint);
+  EXPECT_EQ(error_of("9,5\t5\n"), "p.csv, line 1, field 1: '9,5' " + hint);
+  // What the hint's command makes of them reads.
+  EXPECT_EQ(parse("x;y\n9.5;5\n"), points(2, {9.5, 5}));
+  // Not a decimal comma: two commas, or a comma and a point.
+  EXPECT_EQ(error_of("x;y\n1,000,5;5\n"), "p.csv, line 2, field 1: '1,000,5' is not a number");
+  EXPECT_EQ(error_of("x;y\n1,000.5;5\n"), "p.csv, line 2, field 1: '1,000.5' is not a number");
+}
+
+TEST(PointsCsv, RefusesRowsWithAnotherSeparatorThanTheFirstRow) {
+  EXPECT_EQ(error_of("x,y\n9.5;5\n"),
+            "p.csv, line 2: 1 field, but the header on line 1 has 2 (every row must have the same number of "
+            "fields); line 1 separates values by ',', this line has ';'");
+  EXPECT_EQ(error_of("x;y\n9.5,5\n"),
+            "p.csv, line 2: 1 field, but the header on line 1 has 2 (every row must have the same number of "
+            "fields); line 1 separates values by ';', this line has ','");
+  EXPECT_EQ(error_of("0,0\n9.5\t5\n"),
+            "p.csv, line 2: 1 field, but the first row on line 1 has 2 (every row must have the same number of "
+            "fields); line 1 separates values by ',', this line has tabs");
+  EXPECT_EQ(error_of("x,y\n9,5;5\n"),
+            "p.csv, line 2, field 2: '5;5' is not a number; values are separated by ',' on line 1, and this line has "
+            "';' (one separator for the whole file: ',', ';' or tabs)");
+}
+
+TEST(PointsCsv, RefusesSpaceSeparatedNumbersWithAHint) {
+  EXPECT_EQ(error_of("9.5 5\n5.5 5\n"),
+            "p.csv, line 1, field 1: '9.5 5' holds numbers separated by spaces; casteljau reads ',', ';' or tabs "
+            "between values (convert with: sed -E 's/ +/,/g')");
+  EXPECT_EQ(error_of("x,y\n1 2,3\n"),
+            "p.csv, line 2, field 1: '1 2' holds numbers separated by spaces; casteljau reads ',', ';' or tabs "
+            "between values (convert with: sed -E 's/ +/,/g')");
+  EXPECT_EQ(error_of("x,y\n1 a,3\n"), "p.csv, line 2, field 1: '1 a' is not a number");
+}
+
 TEST(PointsCsv, MessagesStayOnOneLineAndShort) {
   // A stray carriage return and a control character inside a field, and a
   // huge field: the message escapes them and is cut.
@@ -187,6 +242,9 @@ TEST(NumbersCsv, RefusesSeveralColumnsTooManyValuesAndBadFields) {
             "t.csv, line 2, field 1: 'half' is not a number");
   EXPECT_EQ(parse_numbers_csv("# none\n", "t.csv", 10).error().message,
             "t.csv: no values (only comments and blank lines)");
+  EXPECT_EQ(parse_numbers_csv("t\n0\n0,5\n", "t.csv", 10).error().message,
+            "t.csv, line 3: 2 fields, but the header on line 1 has 1 (every row must have the same number of fields); "
+            "'0,5' uses ',' as the decimal mark, casteljau reads '.' (convert with: sed 's/,/./g')");
 }
 
 TEST(PointsCsvFiles, ReadTheExamplesAndNameTheFileInErrors) {

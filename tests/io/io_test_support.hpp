@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the io tests: a private temporary folder, file writing,
-// arbitrary finite doubles (every bit pattern, not a grid), bitwise equality.
+// arbitrary finite doubles (every bit pattern, not a grid), bitwise equality,
+// and the message of a make() that refuses (what a reader must pass on).
 
 #include <rapidcheck.h>
 #include <stdlib.h>
@@ -14,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "casteljau/core/expected.hpp"
 #include "casteljau/core/model_numbers.hpp"
 
 namespace casteljau::test {
@@ -95,6 +97,15 @@ inline rc::Gen<double> any_model_weight() {
     const double m = std::frexp(std::abs(x), &e);
     return m == 0.0 ? 1.0 : std::ldexp(m, ((e % 300) + 300) % 300 - 150);
   });
+}
+
+/// The message with which `made` (a make() given bad values) refuses them;
+/// "accepted" if it did not refuse, which no expectation contains. The
+/// readers add only a location to it, so tests compare against it rather
+/// than against words that belong to make().
+template <class T>
+std::string refusal(const Expected<T>& made) {
+  return made ? std::string("accepted") : made.error().message;
 }
 
 }  // namespace casteljau::test

@@ -78,24 +78,30 @@ TEST(ModelJsonBSpline, EveryBadFieldIsNamed) {
   EXPECT_EQ(error_of(with(R"("degree": "3", "knots": [0,0,0,0,1,1,1,1], )" + points)),
             "m.json, degree: expected a whole number, found the string '3'");
   EXPECT_EQ(error_of(with(R"("degree": 2.5, "knots": [0,0,0,0,1,1,1,1], )" + points)),
-            "m.json, degree: the degree 2.5 is not a whole number in [0, 10000]");
+            "m.json, degree: expected a whole number, found the number 2.5");
+  EXPECT_EQ(error_of(with(R"("degree": 1e10, "knots": [0,0,0,0,1,1,1,1], )" + points)),
+            "m.json, degree: expected a whole number, found the number 10000000000, beyond the range of an int");
+  // The values are make()'s to judge: its words, at the field's path.
+  const auto four = PointArray::make(2, {0, 0, 1, 2, 2, 2, 4, 1}).value();
+  const std::vector<double> clamped{0, 0, 0, 0, 1, 1, 1, 1};
   EXPECT_EQ(error_of(with(R"("degree": -1, "knots": [0,0,0,0,1,1,1,1], )" + points)),
-            "m.json, degree: the degree -1 is not a whole number in [0, 10000]");
+            "m.json, degree: " + test::refusal(BSplineCurve::make(-1, clamped, four)));
   EXPECT_EQ(error_of(with(R"("degree": 4, "knots": [0,0,0,0,1,1,1,1], )" + points)),
-            "m.json, control_points: 4 control points, a B-spline of degree 4 needs at least 5");
+            "m.json, control_points: " + test::refusal(BSplineCurve::make(4, clamped, four)));
+  // A count that fits neither convention: make()'s words and the other count.
   EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1], )" + points)),
-            "m.json, knots: 7 knots for 4 control points of degree 3, expected 8 (control points + degree + 1), or "
-            "6 in the Rhino/openNURBS convention (control points + degree - 1)");
+            "m.json, knots: " + test::refusal(BSplineCurve::make(3, {0, 0, 0, 0, 1, 1, 1}, four)) +
+                "; model JSON also reads 6 knots (control points + degree - 1, the Rhino/openNURBS convention)");
   EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,0.5,1,1], )" + points)),
-            "m.json, knots: knot 5 (0.5) is smaller than knot 4 (1), knots must be non-decreasing");
+            "m.json, knots: " + test::refusal(BSplineCurve::make(3, {0, 0, 0, 0, 1, 0.5, 1, 1}, four)));
   EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,"x"], )" + points)),
             "m.json, knots[7]: expected a number, found the string 'x'");
   EXPECT_EQ(error_of(with(R"("degree": 3, "knots": {"a": 1}, )" + points)),
             "m.json, knots: expected an array of numbers, found an object");
   EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "weights": [1,1,0,1], )" + points)),
-            "m.json, weights[2]: the weight 0 is not > 0, weights must be positive");
+            "m.json, weights: " + test::refusal(BSplineCurve::make(3, clamped, four, {1, 1, 0, 1})));
   EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "weights": [1,1,1], )" + points)),
-            "m.json, weights: 3 weights for 4 control points, expected one weight per control point");
+            "m.json, weights: " + test::refusal(BSplineCurve::make(3, clamped, four, {1, 1, 1})));
   EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "closed": true, )" + points)),
             "m.json, the top level: unknown field 'closed' (a bspline model has the fields type, degree, knots, "
             "control_points, weights)");

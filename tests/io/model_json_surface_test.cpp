@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "io_test_support.hpp"
@@ -243,9 +244,9 @@ TEST(ModelJsonSurface, RefusesARaggedNet) {
 
 TEST(ModelJsonSurface, RefusesBadNetsAndPoints) {
   EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": []})"),
-            "m.json, control_points: the control net is empty, a surface needs at least one row of control points");
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[]]})"),
-            "m.json, control_points[0]: the row is empty, every row of a control net needs at least one point");
+            "m.json, control_points: " + test::refusal(ControlNet::make(0, 0, PointArray{})));
+  EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[], []]})"),
+            "m.json, control_points: " + test::refusal(ControlNet::make(2, 0, PointArray{})));
   EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[0, 1]]})"),
             "m.json, control_points[0][0]: expected a point (an array of numbers), found the number 0");
   EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[[0,0,0]], [[0,1]]]})"),
@@ -265,11 +266,14 @@ TEST(ModelJsonSurface, RefusesWeightsThatDoNotMatchTheNet) {
             "m.json, weights: 6 rows of weights for a control net of 2 rows, expected one weight per control point");
   EXPECT_EQ(error_of(R"({"type": "bezier_surface", )" + points + R"(, "weights": [1,1]})"),
             "m.json, weights[0]: expected a row (an array of numbers), found the number 1");
+  // The values are make()'s to judge: its words, at the field's path.
+  const ControlNet two_by_three = net(2, 3, 2, {0, 0, 1, 0, 2, 0, 0, 1, 1, 1, 2, 1});
   EXPECT_EQ(error_of(R"({"type": "bezier_surface", )" + points + R"(, "weights": [[1,1,1],[1,0,1]]})"),
-            "m.json, weights[1][1]: the weight 0 is not > 0, weights must be positive");
+            "m.json, weights: " + test::refusal(BezierSurface::make(two_by_three, {1, 1, 1, 1, 0, 1})));
   EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
                      points + R"(, "weights": [[1,1,1],[1,1,-2]]})"),
-            "m.json, weights[1][2]: the weight -2 is not > 0, weights must be positive");
+            "m.json, weights: " + test::refusal(BSplineSurface::make(1, 1, {0, 0, 1, 1}, {0, 0, 0.5, 1, 1},
+                                                                      two_by_three, {1, 1, 1, 1, 1, -2})));
 }
 
 TEST(ModelJsonSurface, RefusesUnknownFields) {
@@ -294,23 +298,34 @@ TEST(ModelJsonSurface, RefusesBadDegreesAndKnotsPerDirection) {
             "m.json, degree: expected [p, q], the degrees in u and in v, found the number 1");
   EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1.5], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
                      points + "}"),
-            "m.json, degree[1]: the degree 1.5 is not a whole number in [0, 10000]");
+            "m.json, degree[1]: expected a whole number, found the number 1.5");
+  // The values are make()'s to judge: its words, at the field's path (a
+  // direction's error at that element of the pair).
+  const ControlNet two_by_three = net(2, 3, 1, {0, 1, 2, 3, 4, 5});
   EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [2,1], "knots": [[0,0,0,1,1,1],[0,0,0.5,1,1]], )" +
                      points + "}"),
-            "m.json, control_points: 2 rows of control points, a B-spline surface of degree 2 in u needs at least 3");
+            "m.json, control_points: " +
+                test::refusal(BSplineSurface::make(2, 1, {0, 0, 0, 1, 1, 1}, {0, 0, 0.5, 1, 1}, two_by_three)));
   EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,3], "knots": [[0,0,1,1],[0,0,0,0,1,1,1,1]], )" +
                      points + "}"),
-            "m.json, control_points: 3 control points per row, a B-spline surface of degree 3 in v needs at least 4");
+            "m.json, control_points: " +
+                test::refusal(BSplineSurface::make(1, 3, {0, 0, 1, 1}, {0, 0, 0, 0, 1, 1, 1, 1}, two_by_three)));
+  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [-1,1], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
+                     points + "}"),
+            "m.json, degree[0]: " +
+                test::refusal(BSplineSurface::make(-1, 1, {0, 0, 1, 1}, {0, 0, 0.5, 1, 1}, two_by_three)));
   EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1]], )" + points + "}"),
             "m.json, knots: expected [[u knots], [v knots]], two arrays of numbers, found an array of 1 elements");
   EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,1,1]], )" + points +
                      "}"),
-            "m.json, knots[1]: 4 knots for 3 control points along v of degree 1, expected 5 (control points + degree "
-            "+ 1), or 3 in the Rhino/openNURBS convention");
-  const std::string decreasing =
-      error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,0.7,0.5,1]], )" + points +
-               "}");
-  EXPECT_EQ(decreasing.rfind("m.json, knots[1]: knot 3 (0.5) is smaller than knot 2 (0.7)", 0), 0u) << decreasing;
+            "m.json, knots[1]: " + test::refusal(validate_knots(std::vector<double>{0, 0, 1, 1}, 1, 3)) +
+                "; model JSON also reads 3 knots (control points + degree - 1, the Rhino/openNURBS convention)");
+  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,0.7,0.5,1]], )" +
+                     points + "}"),
+            "m.json, knots[1]: " + test::refusal(validate_knots(std::vector<double>{0, 0, 0.7, 0.5, 1}, 1, 3)));
+  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,1,1,1],[0,0,0.5,1,1]], )" +
+                     points + "}"),
+            "m.json, knots[0]: " + test::refusal(validate_knots(std::vector<double>{0, 1, 1, 1}, 1, 2)));
 }
 
 const char* kLine00to01 = R"({"type": "bezier", "control_points": [[0,0],[0,1]]})";

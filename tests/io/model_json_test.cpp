@@ -163,14 +163,14 @@ TEST(ModelJson, EveryTypeOfTheInterfaceIsKnownAndUnknownTypesAreNamed) {
 
 TEST(ModelJson, EmptyPolygonsAndPointsAreErrors) {
   EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": []})"),
-            "m.json, control_points: the control polygon is empty, a Bézier curve needs at least one control point");
+            "m.json, control_points: " + test::refusal(BezierCurve::make(PointArray{})));
   EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[]]})"),
             "m.json, control_points[0]: the point has no coordinates");
   EXPECT_EQ(error_of(R"({"type": "bezier"})"), "m.json, the top level: missing field 'control_points'");
   EXPECT_EQ(error_of(R"({"type": "piecewise_bezier", "pieces": []})"),
-            "m.json, pieces: the array is empty, a piecewise Bézier curve needs at least one piece");
+            "m.json, pieces: " + test::refusal(PiecewiseBezierCurve::make({})));
   EXPECT_EQ(error_of(R"({"type": "piecewise_bezier", "pieces": [[[0]], []]})"),
-            "m.json, pieces[1]: the control polygon is empty, a Bézier curve needs at least one control point");
+            "m.json, pieces[1]: " + test::refusal(BezierCurve::make(PointArray{})));
   EXPECT_EQ(error_of(R"({"type": "piecewise_bezier"})"), "m.json, the top level: missing field 'pieces'");
 }
 
@@ -179,20 +179,83 @@ TEST(ModelJson, MixedDimensionsAreErrors) {
             "m.json, control_points[2]: 3 coordinates, but control_points[0] has 2 (all points must have the same "
             "dimension)");
   EXPECT_EQ(error_of(R"({"type": "piecewise_bezier", "pieces": [[[0,0],[1,1]], [[1,1,0],[2,2,0]]]})"),
-            "m.json, pieces[1]: the piece has dimension 3, but pieces[0] has dimension 2");
+            "m.json, pieces: " +
+                test::refusal(PiecewiseBezierCurve::make({curve(2, {0, 0, 1, 1}), curve(3, {1, 1, 0, 2, 2, 0})})));
 }
 
 TEST(ModelJson, BadWeightsAreErrors) {
+  // The values are make()'s to judge: its words, at the field's path.
+  const auto line = PointArray::make(2, {0, 0, 1, 2}).value();
   EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [1, 0]})"),
-            "m.json, weights[1]: the weight 0 is not > 0, weights must be positive");
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [-0.5, 1]})"),
-            "m.json, weights[0]: the weight -0.5 is not > 0, weights must be positive");
+            "m.json, weights: " + test::refusal(BezierCurve::make(line, {1, 0})));
+  EXPECT_EQ(error_of(R"({"models": [{"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [-0.5, 1]}]})"),
+            "m.json, models[0].weights: " + test::refusal(BezierCurve::make(line, {-0.5, 1})));
   EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [1]})"),
-            "m.json, weights: 1 weight for 2 control points, expected one weight per control point");
+            "m.json, weights: " + test::refusal(BezierCurve::make(line, {1})));
   EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0]], "weights": ["1"]})"),
             "m.json, weights[0]: expected a number, found the string '1'");
   EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0]], "weights": 1})"),
             "m.json, weights: expected an array of numbers, found the number 1");
+}
+
+TEST(ModelJson, TheValuesAreMakesToJudgeAtTheFieldTheyAreAbout) {
+  // The reader passes make()'s message on unchanged, after the file and the
+  // path of the field it names; a message about the model as a whole (no
+  // field named) stays at the model's path.
+  const auto messages = [](const std::string& text) {
+    const auto models = parse_models_json(text, "m.json");
+    return models ? std::string("accepted") : models.error().message;
+  };
+  const auto two = PointArray::make(1, {0, 1}).value();
+  EXPECT_EQ(messages(R"({"models": [{"type": "bezier", "control_points": [[0]]},
+                                    {"type": "bezier", "control_points": [[0],[1]], "weights": [2, -1]}]})"),
+            "m.json, models[1].weights: " + test::refusal(BezierCurve::make(two, {2, -1})));
+  EXPECT_EQ(messages(R"({"models": [{"type": "bezier", "control_points": [[0]]},
+                                    {"type": "bspline", "degree": 20000, "knots": [0,1], "control_points": [[0]]}]})"),
+            "m.json, models[1].degree: " +
+                test::refusal(BSplineCurve::make(20000, {0, 1}, PointArray::make(1, {0}).value())));
+  // A rational piece's own fields keep the piece's path.
+  EXPECT_EQ(messages(R"({"type": "piecewise_bezier", "pieces": [[[0],[1]],
+                        {"type": "bezier", "control_points": [[1],[2]], "weights": [1]}]})"),
+            "m.json, pieces[1].weights: " + test::refusal(BezierCurve::make(two, {1})));
+}
+
+/// A valid model text of some kind, for the mutations below.
+rc::Gen<std::string> model_text() {
+  return rc::gen::element<std::string>(
+      R"({"type": "bezier", "control_points": [[0,0],[1,2],[2,2]], "weights": [1,2,1]})",
+      R"({"type": "piecewise_bezier", "pieces": [[[0,0],[1,1]], {"type": "bezier", "control_points": [[1,1],[2,0]]}]})",
+      R"({"type": "bspline", "degree": 2, "knots": [0,0,0,0.5,1,1,1], "control_points": [[0],[1],[2],[3]]})",
+      R"({"type": "bspline", "degree": 2, "knots": [0,0,0.5,1,1], "control_points": [[0],[1],[2],[3]]})",
+      R"({"type": "bezier_surface", "control_points": [[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]], "weights": [[1,1],[1,2]]})",
+      R"({"models": [{"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,1,1]],
+                      "control_points": [[[0,0,0],[0,1,0]],[[1,0,0],[1,1,1]]]}]})",
+      R"({"type": "coons", "blending": "cubic", "boundaries": {
+            "u0": {"type": "bezier", "control_points": [[0,0],[0,1]]},
+            "u1": {"type": "bezier", "control_points": [[1,0],[1,1]]},
+            "v0": {"type": "bezier", "control_points": [[0,0],[1,0]]},
+            "v1": {"type": "bezier", "control_points": [[0,1],[1,1]]}}})");
+}
+
+RC_GTEST_PROP(ModelJson, EveryRefusalNamesTheFileOnOneLine, ()) {
+  // Valid models with a few tokens replaced by something else: whatever
+  // breaks (syntax, shape, or a value that make() refuses), the message
+  // starts with the file and is one line.
+  std::string text = *model_text();
+  const int edits = *rc::gen::inRange(1, 4);
+  for (int k = 0; k < edits; ++k) {
+    const std::size_t at = *rc::gen::inRange<std::size_t>(0, text.size());
+    const std::size_t length = *rc::gen::inRange<std::size_t>(0, 4);
+    const std::string replacement = *rc::gen::element<std::string>(
+        "", "0", "-1", "0.5", "1e308", "5e-324", "[]", "[0]", "[[0]]", "{}", "\"x\"", ",", "null", "2.5", "\"degree\"");
+    text.replace(at, std::min(length, text.size() - at), replacement);
+  }
+  const auto models = parse_models_json(text, "m.json");
+  if (!models) {
+    const std::string& message = models.error().message;
+    RC_ASSERT(message.rfind("m.json, ", 0) == 0u);
+    RC_ASSERT(message.find('\n') == std::string::npos);
+  }
 }
 
 TEST(ModelJson, TheDocumentShapeIsChecked) {

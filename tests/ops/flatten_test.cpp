@@ -146,6 +146,32 @@ RC_GTEST_PROP(Flatten, PlaneQuadraticsStayWithinTolerance, ()) { check_random(2,
 RC_GTEST_PROP(Flatten, LinesAndPointsStayWithinTolerance, ()) { check_random(*rc::gen::inRange(0, 2), 2, false); }
 RC_GTEST_PROP(Flatten, HigherDegreesStayWithinTolerance, ()) { check_random(*rc::gen::inRange(4, 9), 2, false); }
 RC_GTEST_PROP(Flatten, RationalCurvesStayWithinTolerance, ()) { check_random(*rc::gen::inRange(1, 6), 2, true); }
+
+TEST(Flatten, HighDegreesKeepEveryPromiseWithTheUnsplitHull) {
+  // Above degree 16 the hull bound is taken on the piece itself (no midpoint
+  // split) and each trial reuses the end point of C split at b as the vertex:
+  // still within tolerance (sampled in long double), vertices point_at bit for bit.
+  for (int degree : {17, 40})
+    for (bool rational : {false, true}) {
+      std::vector<double> xs, weights;
+      for (int i = 0; i <= degree; ++i) {
+        xs.insert(xs.end(), {10.0 * std::cos(0.9 * i), 10.0 * std::sin(1.7 * i)});
+        if (rational) weights.push_back(1.5 + std::sin(2.3 * i));
+      }
+      const BezierCurve curve = BezierCurve::make(*PointArray::make(2, xs), weights).value();
+      const double tolerance = 1e-2;
+      const auto line = flatten(curve, Tolerance{tolerance});
+      ASSERT_TRUE(line.has_value()) << line.error().message;
+      EXPECT_EQ(line->parameters.front(), 0.0);
+      EXPECT_EQ(line->parameters.back(), 1.0);
+      for (std::size_t i = 1; i + 1 < line->parameters.size(); ++i) {
+        const Point q = point_at(curve, line->parameters[i]);
+        EXPECT_TRUE(std::equal(q.begin(), q.end(), line->points[i].begin())) << degree << " vertex " << i;
+      }
+      EXPECT_LE(polyline_deviation(curve, *line), tolerance) << degree << (rational ? " rational" : "");
+      EXPECT_EQ(*flatten_segment_count(curve, Tolerance{tolerance}), static_cast<long>(line->parameters.size()) - 1);
+    }
+}
 RC_GTEST_PROP(Flatten, SpaceCurvesStayWithinTolerance, ()) { check_random(*rc::gen::inRange(2, 6), 3, false); }
 RC_GTEST_PROP(Flatten, LineCurvesStayWithinTolerance, ()) { check_random(*rc::gen::inRange(1, 6), 1, false); }
 RC_GTEST_PROP(Flatten, FourDimensionalRationalCurvesStayWithinTolerance, ()) { check_random(3, 4, true); }

@@ -79,7 +79,7 @@ def test_spans_of_one_ulp_and_the_edges_of_the_ranges_evaluate():
         (lambda: cj.BezierCurve([(0, 0), (1, 1)], weights=[1, 1e-320]), "the range of weights"),
         (lambda: cj.BezierCurve([(0, 0), (1, 1)], weights=[1, 1e51]), "weight 1 is 1e+51, outside [1e-50, 1e+50]"),
         (lambda: cj.BSplineCurve(1, [0, 0, 1, 1], [(0, 0), (1, 1e101)]), "the range of coordinates"),
-        (lambda: cj.make_circle(0, 0, 1e300), "the radius is 1e+300, outside (0, 1e+100]"),
+        (lambda: cj.make_circle([0, 0], 1e300), "the radius is 1e+300, outside (0, 1e+100]"),
     ],
 )
 def test_coordinates_and_weights_outside_the_ranges_raise(make, message):

@@ -2,7 +2,7 @@
 
 BSpline (call with nu and every extrapolate mode, derivative, antiderivative,
 integrate) on seeded random knots for degrees 0..5 with 1-D and 2-D
-coefficients; make_interp_spline for k = 1..7 (scipy's default knots, even
+coefficients; make_interp_spline for k = 0..7 (scipy's default knots, even
 and uneven x), given knots t, derivative bc_type for k = 2..6 (mixed orders,
 non-zero values); CubicSpline for every bc_type, mixed ones included;
 make_lsq_spline on random valid knots with random weights; make_smoothing_spline
@@ -168,6 +168,34 @@ def test_make_interp_spline_default_matches_scipy(k):
         assert relative(ours.c, theirs.c) <= 1e-10
         assert relative(ours(xs), theirs(xs)) <= 1e-11
         assert relative(ours(xs, 1), theirs(xs, 1)) <= 1e-10
+
+
+@pytest.mark.parametrize("count", [1, 2, 12])
+@pytest.mark.parametrize("columns", [0, 2])
+def test_make_interp_spline_k0_matches_scipy(count, columns):
+    """Issue 15: k=0 failed with a knot-multiplicity message. scipy's piecewise constant has the knots
+    x, x[-1] and takes y[i] on [x[i], x[i+1]), y[-1] at x[-1] and beyond (its empty last span): the same knots,
+    coefficients and values in every extrapolate mode, at the data, between them and outside."""
+    rng = np.random.default_rng(150 + count)
+    x = uneven_x(rng, count)
+    y = rng.normal(size=(count, columns) if columns else count)
+    ours, theirs = sl.make_interp_spline(x, y, k=0), si.make_interp_spline(x, y, k=0)
+    np.testing.assert_array_equal(ours.t, theirs.t)
+    np.testing.assert_array_equal(ours.c, theirs.c)
+    assert ours.k == theirs.k == 0
+    middles = (x[1:] + x[:-1]) / 2 if count > 1 else x
+    xs = np.r_[x[0] - 2.0, x[0] - 1e-9, x, middles, x[-1] + 1e-9, x[-1] + 1.0, x[-1] + 100.0, np.nan]
+    for extrapolate in (None, True, False, "periodic"):
+        if extrapolate == "periodic" and count == 1:
+            continue  # a period of length 0
+        np.testing.assert_array_equal(ours(xs, extrapolate=extrapolate), theirs(xs, extrapolate=extrapolate))
+    # The integral of the step function over the data: Σ y_i (x_{i+1} - x_i). (scipy 1.10 gives 0 from x[-1]
+    # on: its antiderivative evaluates the empty last span; casteljau's is the step function's, documented.)
+    if count > 1:
+        steps = np.diff(x).reshape((-1,) + (1,) * (y.ndim - 1))
+        assert relative(ours.integrate(x[0], x[-1]), (y[:-1] * steps).sum(axis=0)) <= RTOL
+    with pytest.raises(ValueError, match="Too much info for k=0"):
+        sl.make_interp_spline(x, y, k=0, bc_type="natural")
 
 
 @pytest.mark.parametrize("bc_type", [None, "not-a-knot", "natural", "clamped", "periodic",

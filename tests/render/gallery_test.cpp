@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <set>
 
 #include "casteljau/io/csv.hpp"
@@ -55,6 +56,23 @@ TEST(Gallery, EveryFigureLaysOutWithATitleAndAnExplanation) {
     EXPECT_NE(html.find("src=\"" + f.name + ".svg\""), std::string::npos);
     EXPECT_NE(html.find("href=\"" + f.name + ".png\""), std::string::npos);
   }
+}
+
+TEST(Gallery, SectionsDescribeExactlyTheFiguresBuilt) {
+  // gallery --help prints gallery_contents(): its sections must cover the
+  // figures' numbers 1..N in order, each section holding at least one figure.
+  auto figures = gallery_figures(default_examples_dir());
+  ASSERT_TRUE(figures) << figures.error().message;
+  const auto sections = gallery_sections();
+  ASSERT_FALSE(sections.empty());
+  EXPECT_EQ(sections.front().first, 1);
+  for (std::size_t i = 1; i < sections.size(); ++i) EXPECT_EQ(sections[i].first, sections[i - 1].last + 1);
+  EXPECT_EQ(sections.back().last, static_cast<int>(figures->size()));
+  for (std::size_t i = 0; i < figures->size(); ++i)
+    EXPECT_EQ(std::stoi((*figures)[i].name.substr(0, 2)), static_cast<int>(i) + 1) << (*figures)[i].name;
+  const std::string contents = gallery_contents();
+  for (const auto& section : sections) EXPECT_NE(contents.find(section.topics), std::string::npos);
+  EXPECT_NE(contents.find("30-34 surfaces"), std::string::npos);
 }
 
 TEST(Gallery, MissingExamplesFolderIsAnError) {

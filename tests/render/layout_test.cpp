@@ -6,9 +6,12 @@
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
+#include <fmt/format.h>
 
 #include "casteljau/bezier/bernstein.hpp"
 #include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/interpolation/lagrange.hpp"
+#include "casteljau/interpolation/parameterization.hpp"
 #include "casteljau/render/layout.hpp"
 #include "casteljau/render/plots.hpp"
 #include "support/generators.hpp"
@@ -69,6 +72,95 @@ TEST(Layout, CurveExtentNotControlPolygon) {
   EXPECT_NEAR((*frames)[0].y_lower, -0.05 * 7.5, 0.01);
   EXPECT_NEAR((*frames)[0].x_lower, -0.05, 1e-3);
   EXPECT_NEAR((*frames)[0].x_upper, 1.05, 1e-3);
+}
+
+TEST(Layout, ExtentBoundsTheRungePolynomialNotACoarsePass) {
+  // Issue 15: 21 equispaced samples of 1/(1+25x^2), the Lagrange polynomial
+  // as a Bézier curve (x, p(x)) of degree 20 whose control points reach 3e5.
+  // The y range must hold the curve's dips (-59.78 near x = -0.975 and 0.975),
+  // found here by the barycentric formula (an evaluation independent of the
+  // Bézier form that is drawn) at 4001 points.
+  std::vector<double> xy;
+  for (int i = 0; i <= 20; ++i) {
+    const double x = -1.0 + i / 10.0;
+    xy.insert(xy.end(), {x, 1.0 / (1.0 + 25.0 * x * x)});
+  }
+  const PointArray points = PointArray::make(2, xy).value();
+  const auto parameters = function_parameters(points).value();
+  const auto polynomial = interpolate_lagrange(points, parameters).value();
+  const BezierCurve curve = to_bezier(polynomial).value();
+  double lowest = INFINITY, highest = -INFINITY;
+  for (int i = 0; i <= 4000; ++i) {
+    const Point p = point_at(polynomial, parameters.front() + (parameters.back() - parameters.front()) * i / 4000.0);
+    lowest = std::min(lowest, p[1]), highest = std::max(highest, p[1]);
+  }
+  ASSERT_LT(lowest, -59.0);
+  for (bool equal : {true, false}) {
+    Figure figure;
+    Panel panel;
+    panel.equal_aspect = equal;
+    panel.curves.push_back({{curve}, solid(colors::black), ""});
+    figure.panels.push_back(panel);
+    auto frames = panel_frames(figure);
+    ASSERT_TRUE(frames) << frames.error().message;
+    const PanelFrame& f = (*frames)[0];
+    // The extent plus matplotlib's 5 % margins, and no more than a pixel beyond.
+    const double margin = 0.05 * (highest - lowest), pixel = (f.y_upper - f.y_lower) / f.area.height;
+    EXPECT_NEAR(f.y_lower, lowest - margin, pixel) << equal;
+    EXPECT_NEAR(f.y_upper, highest + margin, pixel) << equal;
+  }
+}
+
+RC_GTEST_PROP(Layout, CurveExtentHoldsEverySampledPointAndLittleMore, ()) {
+  // Whatever the curve (rational ones, high degrees), the range fitted to it
+  // holds every point of it (sampled at 2001 parameters) and is no wider than
+  // its sampled extent with the 5 % margins, give or take a pixel.
+  const BezierCurve curve = *test::bezier_curve(1, 24, *rc::gen::arbitrary<bool>(), 2);
+  Figure figure;
+  Panel panel;
+  panel.curves.push_back({{curve}, solid(colors::black), ""});
+  figure.panels.push_back(panel);
+  auto frames = panel_frames(figure);
+  if (!frames) {
+    std::string text;
+    for (std::size_t i = 0; i < curve.control_points().size(); ++i) text += fmt::format(" ({}, {})", curve.control_points()[i][0], curve.control_points()[i][1]);
+    RC_FAIL(frames.error().message + text);
+  }
+  const PanelFrame& f = (*frames)[0];
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (int i = 0; i <= 2000; ++i) {
+    const Point p = point_at(curve, i / 2000.0);
+    x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]), y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+  }
+  RC_PRE(x1 - x0 > 1e-6 && y1 - y0 > 1e-6);  // a flat curve gets matplotlib's window around it instead
+  const double px = (f.x_upper - f.x_lower) / f.area.width, py = (f.y_upper - f.y_lower) / f.area.height;
+  RC_ASSERT(f.x_lower <= x0 - 0.05 * (x1 - x0) + px && f.x_lower >= x0 - 0.05 * (x1 - x0) - px);
+  RC_ASSERT(f.x_upper >= x1 + 0.05 * (x1 - x0) - px && f.x_upper <= x1 + 0.05 * (x1 - x0) + px);
+  RC_ASSERT(f.y_lower <= y0 - 0.05 * (y1 - y0) + py && f.y_lower >= y0 - 0.05 * (y1 - y0) - py);
+  RC_ASSERT(f.y_upper >= y1 + 0.05 * (y1 - y0) - py && f.y_upper <= y1 + 0.05 * (y1 - y0) + py);
+}
+
+TEST(Layout, ProgressRisesToOneOverEveryPanelsCurves) {
+  // Three panels (the second with Bernstein graphs, the third with nothing to
+  // flatten): the fractions never fall and end at 1, and a layout with no
+  // Progress draws the same scene.
+  Figure figure;
+  figure.columns = 3;
+  Panel curves;
+  for (int i = 0; i < 5; ++i)
+    curves.curves.push_back({{BezierCurve::make(*PointArray::make({{0, 0}, {1, 2.0 + i}, {3, 0}})).value()}, solid(colors::black), ""});
+  figure.panels.push_back(curves);
+  figure.panels.push_back(bernstein_basis_panel(10).value());
+  figure.panels.push_back(points_figure({Vec2{{0, 0}}, Vec2{{1, 1}}}, false).panels[0]);
+  std::vector<double> seen;
+  const Progress progress{[](void* self, double f) { static_cast<std::vector<double>*>(self)->push_back(f); }, &seen};
+  const auto scene = layout(figure, progress);
+  ASSERT_TRUE(scene);
+  ASSERT_GE(seen.size(), 16u);
+  EXPECT_EQ(seen.front(), 0.0);
+  EXPECT_EQ(seen.back(), 1.0);
+  for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]) << i;
+  EXPECT_EQ(scene->shapes.size(), layout(figure)->shapes.size());
 }
 
 TEST(Layout, FixedAndLogarithmicRanges) {
@@ -176,8 +268,11 @@ TEST(Plots, BernsteinGraphMatchesBernsteinAll) {
 }
 
 TEST(Plots, BernsteinBasisPanel) {
-  EXPECT_EQ(bernstein_basis_panel(20)->curves.size(), 21u);
-  EXPECT_EQ(bernstein_basis_panel(20, true)->curves.size(), 19u);
+  // Drawn from the closed form (bernstein_graph.hpp), not as Bézier curves of degree n.
+  EXPECT_EQ(bernstein_basis_panel(20)->bernstein_graphs.size(), 21u);
+  EXPECT_TRUE(bernstein_basis_panel(20)->curves.empty());
+  EXPECT_EQ(bernstein_basis_panel(20, true)->bernstein_graphs.size(), 19u);
+  EXPECT_EQ(bernstein_basis_panel(20, true)->bernstein_graphs.front().index, 1);
   EXPECT_FALSE(bernstein_basis_panel(0));
   EXPECT_FALSE(bernstein_basis_panel(1, true));
   EXPECT_FALSE(bernstein_basis_panel(kMaxPlottedBasisDegree + 1));

@@ -19,6 +19,7 @@
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/point_array.hpp"
+#include "casteljau/core/progress.hpp"
 #include "casteljau/core/tolerance.hpp"
 
 namespace casteljau {
@@ -119,9 +120,13 @@ struct SmoothingOptions {
 /// minimum on the grid when GCV has several local ones). Errors: those of
 /// fit_least_squares, degree below 2, λ negative or not finite, λ = 0 with
 /// more control points than points, a singular system.
-/// O(m p² + n p³) per λ; about 100 values of λ for GCV.
+/// A λ that leaves the normal equations singular is named too large (λ tr Ω
+/// swamps tr(BᵀB): the data are lost in rounding) or too small (it cannot
+/// determine more control points than points), with the range GCV searches.
+/// O(m p² + n p³) per λ; about 100 values of λ for GCV, each reported to
+/// `progress` (the fraction of the search's evaluations done).
 Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const double> parameters,
-                                   const SmoothingOptions& options);
+                                   const SmoothingOptions& options, Progress progress = {});
 
 /// Least squares refined until every error ‖C(t_i) − P_i‖ is at most
 /// `tolerance.distance`: start from p+1 control points (one Bézier piece) and
@@ -134,8 +139,11 @@ Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const dou
 /// reached" (naming the error achieved and the control point count) when no
 /// span can be split any more: every offending span holds a single point or
 /// the control points reached the number of points.
-/// O(m p² d) per round; the rounds roughly halve the offending spans.
+/// O(m p² d) per round; the rounds roughly halve the offending spans. After
+/// each round `progress` hears the share of points within the tolerance (the
+/// largest so far; 1 when done).
 Expected<BSplineFit> fit_to_tolerance(const PointArray& points, std::span<const double> parameters, int degree,
-                                      Tolerance tolerance, FitEnds ends = FitEnds::interpolated);
+                                      Tolerance tolerance, FitEnds ends = FitEnds::interpolated,
+                                      Progress progress = {});
 
 }  // namespace casteljau

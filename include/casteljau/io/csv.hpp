@@ -1,7 +1,8 @@
 #pragma once
 // Point sets as CSV (docs/formats.md): '#' comment lines, an optional header
 // row of column names (x,y or x,y,z, ...), one point per line, fields
-// separated by ','. Bad rows are errors that name the file, line and field.
+// separated by ',' (or ';' or tabs, as the first row shows), '.' the decimal
+// mark. Bad rows are errors that name the file, line and field.
 
 #include <cstddef>
 #include <filesystem>
@@ -20,9 +21,19 @@ namespace casteljau {
 /// count from 1. Rules (docs/formats.md, "Point sets"):
 /// - a line whose first non-blank character is '#' is a comment; blank lines
 ///   are ignored; "\r\n" line ends and a leading UTF-8 byte order mark are accepted;
-/// - fields are separated by ','; spaces and tabs around a field are ignored;
-/// - the first row is a header when none of its fields is a number (non-empty
-///   names); a row with some numbers and some non-numbers is a bad row;
+/// - fields are separated by one character for the whole file, chosen by its
+///   first row (header or point): ';' if the row holds one, a tab if a tab
+///   stands inside a ','-separated field ("1\t2"), else ','; spaces and tabs
+///   around a field (and around the row) are ignored;
+/// - the decimal mark is '.': a field that would be a number with its ','
+///   read as '.' ("9,5", as spreadsheets write where ',' is the decimal mark)
+///   is refused with the conversion to run ("... uses ',' as the decimal
+///   mark; ... (convert with: sed 's/,/./g')"), and so are a row written with
+///   another separator than the first row's and numbers separated by spaces,
+///   each message saying what was found and what casteljau reads;
+/// - the first row is a header when none of its fields is a number, in
+///   casteljau's notation or the ones above (non-empty names); a row with
+///   some numbers and some non-numbers is a bad row;
 /// - a number is the whole field, read by std::from_chars (general format),
 ///   with an optional leading '+'; NaN, infinities and values that overflow
 ///   (1e999) are refused; values that underflow (1e-400) read as 0 or subnormal;

@@ -12,39 +12,36 @@
 
 namespace casteljau {
 
-/// Parses model JSON text (nlohmann-json's SAX parser feeding our own checks);
-/// `source` names it in errors. Messages are "<source>, <where>: <what>":
+/// Parses model JSON text (nlohmann-json's SAX parser feeding our own
+/// document builder); `source` names it in errors. Every message is
+/// "<source>, <where>: <what>":
 /// - syntax errors give the line and column (1-based; the column counts UTF-8
 ///   characters): "model.json, line 3, column 5: syntax error while parsing
-///   object key - invalid literal; last read: '{x'";
-/// - numbers that overflow a double: "model.json, line 2, column 40,
-///   control_points[1][0]: the number 1e999 overflows to infinity";
-/// - bad fields name their path: "model.json, models[1].control_points[2][0]:
-///   expected a number, found a string", "model.json, models[0]: unknown field
-///   'colour' (a bezier model has type, control_points, weights)";
-/// - empty control polygons, mixed dimensions, weights <= 0, a weights count
-///   that differs from the control points', duplicate keys, more than
-///   tolerances::kMaxControlPoints control points in one model;
-/// - bspline models: a degree that is not a whole number in [0,
-///   kMaxBSplineDegree], fewer than p+1 control points, a knot count that is
-///   neither n+p+2 nor the Rhino/openNURBS n+p (converted by knots_from_rhino),
-///   knots that validate_knots refuses ("m.json, knots: knot 4 (0.5) is
-///   smaller than knot 3 (0.7), knots must be non-decreasing");
-/// - surfaces (control_points[i][j]: i along u, j along v): ragged nets
-///   ("m.json, control_points[2]: row 2 has 3 points, row 0 has 4 (a control
-///   net is rectangular)"), points of mixed dimension, weights[i][j] whose
-///   shape differs from the net's ("weights[1]: row 1 has 3 weights, the
-///   control net has 4 points per row") or that are <= 0 (path of the
-///   weight); bspline_surface: degree [p, q] (each as a curve's degree, path
-///   degree[0] / degree[1]), fewer than p+1 rows or q+1 points per row, knots
-///   [[u], [v]] checked per direction like a curve's (path knots[0] /
-///   knots[1], full or Rhino count);
-/// - coons: blending other than linear/cubic, unknown or missing boundaries
-///   (u0, u1, v0, v1), a boundary that is a surface, a piecewise boundary
-///   whose pieces do not meet, and the corner check of CoonsPatch::make
-///   ("m.json, boundaries: the boundaries u1 and v0 do not meet at ...").
-///   Each boundary, a curve model of any kind, becomes a B-spline curve
-///   (to_bspline, from_bezier_pieces) that the patch maps to [0,1].
+///   object key - invalid literal; last read: '{x'"; so do numbers that
+///   overflow a double: "model.json, line 2, column 40, control_points[1][0]:
+///   the number '1e999' overflows to infinity, numbers must be finite";
+/// - the JSON's shape is checked here, each error at its path: unknown or
+///   missing fields ("models[0]: unknown field 'colour' (a bezier model has
+///   the fields type, control_points, weights)"), duplicate keys, values of
+///   the wrong kind ("models[1].control_points[2][0]: expected a number,
+///   found the string 'a'"), nested arrays that do not flatten (points of
+///   mixed dimension, ragged nets "control_points[2]: row 2 has 3 points, row
+///   0 has 4 (a control net is rectangular)", weights[i][j] not in the net's
+///   shape), a degree that is not a whole number, more than
+///   tolerances::kMaxControlPoints control points in one model (a coons
+///   patch's four boundaries together) or tolerances::kMaxInputValues values;
+/// - the values are the types' make() to judge (BezierCurve,
+///   PiecewiseBezierCurve, BSplineCurve, BezierSurface, BSplineSurface,
+///   CoonsPatch, ControlNet, PointArray): their message, unchanged, at the
+///   field it is about ("m.json, models[1].knots: knot 4 (0.5) is smaller than
+///   knot 3 (0.7), knots must be non-decreasing"; a surface's direction is the
+///   element of the pair, "knots[1]: ..."); the corner gaps of a coons patch
+///   at "boundaries";
+/// - a bspline's knots may have n + p + 2 values or, in the Rhino/openNURBS
+///   convention, n + p (completed by knots_from_rhino, whose errors say the
+///   convention); a count that is neither says both.
+/// Each boundary of a coons patch, a curve model of any kind, becomes a
+/// B-spline curve (to_bspline, from_bezier_pieces) that the patch maps to [0,1].
 /// O(size of the text); holds the parsed document in memory once.
 Expected<std::vector<Model>> parse_models_json(std::string_view text, const std::string& source);
 

@@ -60,9 +60,9 @@ double control_polygon_flatness(const BezierCurve& curve);
 /// of the signed distance to the chord's line (a cubic in t, maximised at
 /// the roots of a quadratic), combined with the largest overshoot beyond the
 /// chord's ends as sqrt(F^2 + O^2) when the curve runs past them. Otherwise:
-/// the piece is split at its middle and the bound is the largest distance
-/// from the halves' control points to the segment (convex hull property).
-/// O(1) or O(n^2 d).
+/// the largest distance from the control points of the piece (up to degree
+/// 16: of its two halves, split at its middle) to the segment (convex hull
+/// property). O(1) or O(n^2 d).
 double chord_deviation_bound(const BezierCurve& curve, double t0, double t1);
 
 }  // namespace casteljau

@@ -67,7 +67,19 @@ Stroke dotted(Color color, double width_points = 1.5);
 struct CurveItem {
   std::vector<BezierCurve> pieces;
   Stroke stroke;
-  std::string label;  ///< legend text; empty: not in the legend
+  std::string label;   ///< legend text; empty: not in the legend
+  std::string source = {};  ///< what layout errors name it by (a file, "file.json[2]"); empty: "curve i"
+};
+
+/// The graph t -> (t, B_{n,k}(t)) of one Bernstein polynomial over [0, 1],
+/// drawn from its closed form at layout time within a quarter pixel
+/// (bernstein_graph.hpp): O(n) per vertex, where the same graph as a Bézier
+/// curve of degree n (plots.hpp's bernstein_graph) costs O(n^2).
+struct BernsteinGraphItem {
+  int degree = 1;  ///< n, in [1, tolerances::kMaxBezierDegree]
+  int index = 0;   ///< k, in [0, n]
+  Stroke stroke;
+  std::string label;
 };
 
 /// A polyline through given points (data that is not a Bézier curve:
@@ -78,12 +90,18 @@ struct PolylineItem {
   std::string label;
 };
 
-/// Filled circles at points (matplotlib 'o' markers); diameter in pixels.
+/// The form of a marker: a filled circle (matplotlib 'o', the notebook's
+/// control points) or a filled diamond (matplotlib 'D', data points, so that
+/// the two stay apart without colour).
+enum class MarkerShape { disc, diamond };
+
+/// Filled markers at points; diameter (the diamond's width) in pixels.
 struct MarkerItem {
   std::vector<Vec2> points;
   Color color = colors::red;
   double diameter = 6.0 * kPixelsPerPoint;
   std::string label;
+  MarkerShape shape = MarkerShape::disc;
 };
 
 /// Independent straight segments, optionally with an arrow head at the end.
@@ -128,7 +146,7 @@ struct Axis {
 enum class LegendPlace { best, upper_right, upper_left, lower_left, lower_right, none };
 
 /// One set of axes. Layers are drawn in this order: regions, segments,
-/// polylines, curves, markers, texts (markers above lines, as in the notebook);
+/// polylines, curves, Bernstein graphs, markers, texts (markers above lines, as in the notebook);
 /// inside a layer in insertion order. The legend lists labelled items in the
 /// same order.
 struct Panel {
@@ -143,6 +161,7 @@ struct Panel {
   std::vector<SegmentItem> segments;
   std::vector<PolylineItem> polylines;
   std::vector<CurveItem> curves;
+  std::vector<BernsteinGraphItem> bernstein_graphs;
   std::vector<MarkerItem> markers;
   std::vector<TextItem> texts;
 };

@@ -4,12 +4,14 @@
 // with one line of explanation. `casteljau gallery` and `make demo` call this.
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/point_array.hpp"
+#include "casteljau/core/progress.hpp"
 #include "casteljau/render/figure.hpp"
 
 namespace casteljau::render {
@@ -20,6 +22,24 @@ struct GalleryFigure {
   std::string explanation;  ///< one sentence (plain text; measured numbers included)
   Figure figure;
 };
+
+/// One section of the gallery: the first and last number of its figures
+/// (their names start with the number, "17_bspline_basis_clamped") and what
+/// they show, in a phrase.
+struct GallerySection {
+  int first = 0, last = 0;
+  const char* topics = "";
+};
+
+/// The gallery's sections in order: the Bézier figures of seed 004 and seed
+/// 003, the B-spline and NURBS figures, interpolation, surfaces. The one
+/// description of what the gallery holds (`casteljau gallery --help` prints
+/// it; a test checks it against the figures built).
+std::span<const GallerySection> gallery_sections();
+
+/// The sections as one sentence for a help text: "01-16 Bézier curves (...);
+/// 17-22 B-splines and NURBS (...); ...".
+std::string gallery_contents();
 
 /// The folder with the seeds' CSV files (head, car, semicircle, spirals...)
 /// fixed when casteljau was built.
@@ -77,8 +97,10 @@ std::string gallery_index_html(const std::vector<GalleryFigure>& figures);
 
 /// Builds the gallery and writes NAME.svg, NAME.png for every figure and
 /// index.html into `dir` (created with its parents if needed). Each file is
-/// written atomically; index.html last, so a complete index means a complete gallery.
+/// written atomically; index.html last, so a complete index means a complete
+/// gallery. `progress` hears the fraction done: building every figure is the
+/// first tenth, then each figure's share of the rest as it is laid out and written.
 Expected<std::vector<GalleryFigure>> write_gallery(const std::filesystem::path& dir,
-                                                   const std::filesystem::path& examples_dir);
+                                                   const std::filesystem::path& examples_dir, Progress progress = {});
 
 }  // namespace casteljau::render

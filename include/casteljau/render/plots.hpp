@@ -43,12 +43,14 @@ void add_curvature_comb(Panel& panel, const BezierCurve& plane, double length, i
                         Color color = colors::gray);
 
 /// The graph t -> B_{n,k}(t) on [0,1] as a Bézier curve: control points
-/// (j/n, delta_jk), exact by linear precision, so the basis is drawn by the
-/// same certified flattening as every other curve. n >= 1, 0 <= k <= n.
+/// (j/n, delta_jk), exact by linear precision. n >= 1, 0 <= k <= n. Figures
+/// of the basis draw BernsteinGraphItems instead (the closed form, O(n) per
+/// vertex), since this curve costs O(n^2) per evaluation, O(n^3) for the basis.
 BezierCurve bernstein_graph(int n, int k);
 
 /// A panel with B_{n,k} for k = 0..n (or k = 1..n-1 with `without_ends`),
-/// black like the notebook's plot_bernstein. Errors: n < 1, n beyond
+/// black like the notebook's plot_bernstein, as BernsteinGraphItems (drawn
+/// from their closed form, bernstein_graph.hpp). Errors: n < 1, n beyond
 /// kMaxPlottedBasisDegree, `without_ends` with n < 2 (nothing left to draw).
 Expected<Panel> bernstein_basis_panel(int n, bool without_ends = false);
 
@@ -56,11 +58,14 @@ Expected<Panel> bernstein_basis_panel(int n, bool without_ends = false);
 Expected<Figure> bernstein_basis_figure(int n, bool without_ends = false);
 
 /// One input of the `plot` command: curves (model JSON, or a CSV point set
-/// read as one Bézier curve's control polygon), or a point set drawn as dots.
+/// read as one Bézier curve's control polygon), or a point set drawn as data:
+/// its points as diamonds (markers) and/or the polyline through them.
 struct PlotSource {
   std::string name;           ///< the file, for the legend and error messages
-  std::vector<Model> models;  ///< curves; when empty, `points` is drawn as red dots
+  std::vector<Model> models;  ///< curves; when empty, `points` is a point set
   PointArray points;
+  bool markers = true;    ///< a point set: its points as filled diamonds (MarkerShape::diamond)
+  bool polyline = false;  ///< a point set: the polyline through its points, in order
 };
 
 /// What `plot` draws: the options for every curve, and a second panel with the
@@ -74,14 +79,26 @@ struct PlotOptions {
 
 /// The figure of `plot`: every curve (black when there is one, the tab10
 /// cycle otherwise, named in the legend when there are several), in the plane
-/// (plane_curve: 3D curves projected on x, y; 1D curves as graphs). A
+/// (plane_curve: 3D curves projected on x, y; 1D curves as graphs), and every
+/// point set as data (tab10 cycle; diamonds, which the legend calls "data
+/// points" beside curves, where control points are red discs). A
 /// piecewise curve gets the options piece by piece; its construction is drawn
 /// on the piece holding the global parameter T in [0, m], its end tangents at
 /// its two ends. A B-spline or NURBS curve is drawn by add_bspline
 /// (bspline_plots.hpp): its own control polygon and points, the de Boor net
-/// as its construction at u in its domain. Errors: no source; a construction parameter outside a
-/// curve's domain (named); a rational curve of dimension 1.
+/// as its construction at u in its domain. Every error names the file (and
+/// the model, "file[i]", when it holds several); so do layout errors about
+/// its curves (CurveItem::source). Errors: no source; a construction
+/// parameter outside a curve's domain; a rational curve of dimension 1; a
+/// curve piece of degree beyond kMaxPlottedCurveDegree (check_plotted_degree);
+/// control points (or data points) wider than kMaxPlottedWidth, alone or together.
 Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotOptions& options);
+
+/// An error "<subject> x from a to b, too wide to plot ..." (or the diagonal,
+/// naming both ranges) when the points' box is wider than kMaxPlottedWidth,
+/// beyond what a figure can map to pixels, else nothing. `subject` names what
+/// spans it ("head.json: the points span").
+Status check_plottable_extent(const std::vector<Vec2>& points, const std::string& subject);
 
 /// The smallest box around a curve's control points, widened by 1 % of its
 /// size: the curve lies in it (convex hull property).
