@@ -1,5 +1,6 @@
 #include "casteljau/bezier/bezier_curve.hpp"
 
+#include "casteljau/core/model_numbers.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "../core/homogeneous.hpp"
 #include "../core/weights.hpp"
@@ -18,14 +19,7 @@ Expected<BezierCurve> BezierCurve::make(PointArray control_points, std::vector<d
                  std::to_string(tolerances::kMaxBezierDegree) +
                  " (evaluation costs O(n^2) per point); interpolate the points or split them into pieces"};
   }
-  for (std::size_t i = 0; i < control_points.coordinates().size(); ++i) {
-    const std::size_t d = control_points.dimension();
-    if (auto ok = check_finite(control_points.coordinates()[i],
-                               "coordinate " + std::to_string(i % d) + " of control point " + std::to_string(i / d));
-        !ok) {
-      return ok.error();
-    }
-  }
+  if (auto ok = check_coordinates(control_points, "control point"); !ok) return ok.error();
   if (auto ok = detail::check_weights(weights, control_points.size()); !ok) return ok.error();
   return BezierCurve(std::move(control_points), std::move(weights));
 }

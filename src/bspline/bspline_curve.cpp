@@ -6,6 +6,7 @@
 #include <string>
 
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/core/model_numbers.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
 #include "../core/homogeneous.hpp"
@@ -28,14 +29,7 @@ Expected<BSplineCurve> BSplineCurve::make(int degree, std::vector<double> knots,
     return Error{std::to_string(count) + " control points, a B-spline of degree " + std::to_string(degree) +
                  " needs at least " + std::to_string(degree + 1)};
   }
-  const std::size_t d = static_cast<std::size_t>(control_points.dimension());
-  for (std::size_t i = 0; i < control_points.coordinates().size(); ++i) {
-    if (auto ok = check_finite(control_points.coordinates()[i],
-                               "coordinate " + std::to_string(i % d) + " of control point " + std::to_string(i / d));
-        !ok) {
-      return ok.error();
-    }
-  }
+  if (auto ok = check_coordinates(control_points, "control point"); !ok) return ok.error();
   if (auto ok = validate_knots(knots, degree, count); !ok) return ok.error();
   if (auto ok = detail::check_weights(weights, count); !ok) return ok.error();
   return BSplineCurve(degree, std::move(knots), std::move(control_points), std::move(weights));
@@ -46,7 +40,7 @@ BSplineCurve BSplineCurve::from_trusted(int degree, std::vector<double> knots, P
   assert(degree >= 0 && control_points.size() >= static_cast<std::size_t>(degree) + 1);
   assert(knots.size() == control_points.size() + static_cast<std::size_t>(degree) + 1);
   assert(weights.empty() || weights.size() == control_points.size());
-  assert(validate_knots(knots, degree, control_points.size()).has_value());
+  assert(check_knot_structure(knots, degree, control_points.size()).has_value());
   return BSplineCurve(degree, std::move(knots), std::move(control_points), std::move(weights));
 }
 

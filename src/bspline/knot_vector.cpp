@@ -2,8 +2,10 @@
 #include "casteljau/bspline/knot_vector.hpp"
 
 #include <cassert>
+#include <cmath>
 #include <string>
 
+#include "casteljau/core/model_numbers.hpp"
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
@@ -17,11 +19,13 @@ std::string knot_text(std::size_t index, double value) {
   return "knot " + std::to_string(index) + " (" + number_text(value) + ")";
 }
 
-// The shared checks of validate_knots and knots_from_rhino; `offset` maps an
-// index of `knots` to the index the caller knows (the Rhino vector lacks
-// the first knot, so its indices are one less).
+// The shared checks of validate_knots, knots_from_rhino and
+// check_knot_structure; `offset` maps an index of `knots` to the index the
+// caller knows (the Rhino vector lacks the first knot, so its indices are one
+// less). With `ranges`, every knot must also be a valid knot (check_knot) and
+// every non-empty span at least tolerances::kMinKnotSpan wide (check_span).
 Status check_knots(std::span<const double> knots, int degree, std::size_t expected_count,
-                   std::ptrdiff_t offset, const char* convention) {
+                   std::ptrdiff_t offset, const char* convention, bool ranges) {
   if (knots.size() != expected_count) {
     return Error{std::to_string(knots.size()) + " knots given, " + convention + " needs " +
                  std::to_string(expected_count) + " (control points + degree + 1)"};
@@ -30,7 +34,9 @@ Status check_knots(std::span<const double> knots, int degree, std::size_t expect
   for (std::size_t i = 0; i < knots.size(); ++i) {
     // The Rhino input does not contain the two outermost (copied) knots.
     if (offset != 0 && (i == 0 || i + 1 == knots.size())) continue;
-    if (auto ok = check_finite(knots[i], "knot " + std::to_string(index(i))); !ok) return ok;
+    if (ranges ? is_valid_knot(knots[i]) : std::isfinite(knots[i])) continue;  // the name only for a failure
+    const std::string name = "knot " + std::to_string(index(i));
+    return ranges ? check_knot(knots[i], name) : check_finite(knots[i], name);
   }
   int run = 1;
   for (std::size_t i = 1; i < knots.size(); ++i) {
@@ -52,6 +58,13 @@ Status check_knots(std::span<const double> knots, int degree, std::size_t expect
     return Error{"the domain [knot " + a + ", knot " + b + "] = [" + number_text(knots[p]) + ", " +
                  number_text(knots[last]) + "] is empty, knot " + a + " must be smaller than knot " + b};
   }
+  if (ranges) {
+    for (std::size_t i = 1; i < knots.size(); ++i) {
+      if (is_valid_span(knots[i - 1], knots[i])) continue;
+      return check_span(knots[i - 1], knots[i],
+                        "knots " + std::to_string(index(i - 1)) + " and " + std::to_string(index(i)));
+    }
+  }
   return {};
 }
 
@@ -60,7 +73,13 @@ Status check_knots(std::span<const double> knots, int degree, std::size_t expect
 Status validate_knots(std::span<const double> knots, int degree, std::size_t control_point_count) {
   assert(degree >= 0 && control_point_count >= static_cast<std::size_t>(degree) + 1);
   return check_knots(knots, degree, control_point_count + static_cast<std::size_t>(degree) + 1, 0,
-                     "a B-spline of this degree and control point count");
+                     "a B-spline of this degree and control point count", true);
+}
+
+Status check_knot_structure(std::span<const double> knots, int degree, std::size_t control_point_count) {
+  assert(degree >= 0 && control_point_count >= static_cast<std::size_t>(degree) + 1);
+  return check_knots(knots, degree, control_point_count + static_cast<std::size_t>(degree) + 1, 0,
+                     "a B-spline of this degree and control point count", false);
 }
 
 std::vector<double> clamped_uniform_knots(int degree, std::size_t control_point_count, Interval domain) {
@@ -113,7 +132,9 @@ Expected<std::vector<double>> knots_from_rhino(std::span<const double> rhino_kno
   knots.push_back(rhino_knots.front());
   knots.insert(knots.end(), rhino_knots.begin(), rhino_knots.end());
   knots.push_back(rhino_knots.back());
-  if (auto ok = check_knots(knots, degree, needed + 2, -1, "the Rhino/openNURBS convention"); !ok) return ok.error();
+  if (auto ok = check_knots(knots, degree, needed + 2, -1, "the Rhino/openNURBS convention", true); !ok) {
+    return ok.error();
+  }
   return knots;
 }
 

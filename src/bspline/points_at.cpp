@@ -163,11 +163,18 @@ class SpanFinder {
     first_span_ = find_span(knots, p, lower_);
     last_span_ = find_span(knots, p, upper_);
     scale_ = static_cast<double>(last_index_ + 1 - p) / (upper_ - lower_);
+    // Knots from make() keep this finite and (u - lower) * scale within
+    // [0, n - p + 1] (validate_knots). A computed curve need only have
+    // well-formed knots: a domain of subnormal width would make the scale
+    // infinite and the guess NaN, which must never be cast to an index.
+    // Scale 0 turns the guess off (bisection instead).
+    if (!std::isfinite(scale_) || !std::isfinite(upper_ - lower_)) scale_ = 0.0;
   }
 
   int find(double u) const {
     if (!(u >= lower_)) return first_span_;
     if (u >= upper_) return last_span_;
+    if (scale_ == 0.0) return find_span(knots_, degree_, u);
     // t_p <= u < t_{n+1}: exactly one span [t_i, t_{i+1}) holds u.
     const double* t = knots_.data();
     const double guess = (u - lower_) * scale_;
@@ -187,7 +194,7 @@ class SpanFinder {
   /// The spans of all lanes at once when every lane lies in the domain and
   /// the interpolation guess is right for each (uniform knots): then true.
   bool guess(Pack u, Lanes* spans) const {
-    if (!all_within(u, lower_, upper_)) return false;
+    if (scale_ == 0.0 || !all_within(u, lower_, upper_)) return false;
     const Pack g = (u - lower_) * scale_;
     const Pack limit = broadcast(static_cast<double>(last_index_ - degree_));
     const Lanes index = __builtin_convertvector(select(g < limit, g, limit), Lanes) + degree_;

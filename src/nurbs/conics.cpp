@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "casteljau/core/model_numbers.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
 
@@ -36,10 +37,16 @@ std::pair<double, double> cos_sin(double angle) {
   return {std::cos(angle), std::sin(angle)};
 }
 
+/// A radius or semi-axis: finite, > 0 and a valid coordinate (at most
+/// tolerances::kMaxCoordinate).
 Status check_positive(double value, const char* what) {
   if (auto ok = check_finite(value, what); !ok) return Error{ok.error().message + ", it must be finite and > 0"};
   if (!(value > 0.0)) {
     return Error{std::string(what) + " is " + number_text(value) + ", it must be finite and > 0"};
+  }
+  if (!is_valid_coordinate(value)) {
+    return Error{std::string(what) + " is " + number_text(value) + ", outside (0, " +
+                 number_text(tolerances::kMaxCoordinate) + "], the range of coordinates"};
   }
   return {};
 }
@@ -59,11 +66,15 @@ Expected<ConicFrame> checked_frame(const ConicFrame& frame) {
     return Error{"the axes have " + std::to_string(frame.x_axis.size()) + " and " +
                  std::to_string(frame.y_axis.size()) + " coordinates, the centre has " + std::to_string(d)};
   }
+  // The centre is a point of the curve's space (a valid coordinate each); the
+  // axes need only be finite, the orthonormality check bounds them.
   const std::pair<const Point*, const char*> parts[] = {
       {&frame.center, "centre"}, {&frame.x_axis, "x axis"}, {&frame.y_axis, "y axis"}};
   for (const auto& [point, name] : parts) {
     for (std::size_t i = 0; i < d; ++i) {
-      if (auto ok = check_finite((*point)[i], "coordinate " + std::to_string(i) + " of the " + name); !ok) {
+      const std::string what = "coordinate " + std::to_string(i) + " of the " + name;
+      if (auto ok = point == &frame.center ? check_coordinate((*point)[i], what) : check_finite((*point)[i], what);
+          !ok) {
         return ok.error();
       }
     }
@@ -103,14 +114,6 @@ Expected<BSplineCurve> elliptic_arc(const ConicFrame& frame, double a, double b,
   const int pieces = turn <= kPi / 2 ? 1 : turn <= kPi ? 2 : turn <= 1.5 * kPi ? 3 : 4;
   const double step = sweep / pieces;
   const double weight = cos_sin(std::abs(step) / 2).first;
-
-  // The middle control points lie at distance r / cos(dθ/2) <= r √2: refuse
-  // a radius so close to the largest double that they overflow (inf * 0 in
-  // a coordinate would otherwise make a NaN).
-  if (!std::isfinite(std::max(a, b) / weight)) {
-    return Error{"the radius " + number_text(std::max(a, b)) + " is too large: the control points at distance r / " +
-                 number_text(weight) + " overflow"};
-  }
   std::vector<double> coordinates;
   std::vector<double> weights;
   std::vector<double> knots{0.0, 0.0, 0.0};
@@ -138,9 +141,14 @@ Expected<BSplineCurve> elliptic_arc(const ConicFrame& frame, double a, double b,
     }
   }
   knots.insert(knots.end(), {1.0, 1.0, 1.0});
-  auto points = PointArray::make(static_cast<int>(frame.center.size()), std::move(coordinates), "control point");
-  if (!points) return points.error();  // a huge radius can overflow r / cos(dθ/2)
-  return BSplineCurve::make(2, std::move(knots), std::move(*points), std::move(weights));
+  // The centre and the radius are each within the range of coordinates, and
+  // so every control point within a few times it (finite): the middle ones
+  // lie at distance r / cos(dθ/2) <= r √2 from the centre, and can leave it.
+  PointArray points = PointArray::from_trusted(static_cast<int>(frame.center.size()), std::move(coordinates));
+  if (auto ok = check_coordinates(points, "control point"); !ok) {
+    return Error{"the conic reaches outside the range of coordinates: " + ok.error().message};
+  }
+  return BSplineCurve::make(2, std::move(knots), std::move(points), std::move(weights));
 }
 
 Expected<BSplineCurve> checked_arc(const ConicFrame& frame, double a, double b, double start, double sweep) {

@@ -23,6 +23,7 @@ Expected<BezierSurface> BezierSurface::make(ControlNet net, std::vector<double> 
                  std::to_string(net.columns() - 1) + " in v is above the limit " +
                  std::to_string(tolerances::kMaxBezierDegree)};
   }
+  if (auto ok = detail::check_net_coordinates(net); !ok) return ok.error();
   if (auto ok = detail::check_surface_weights(weights, net); !ok) return ok.error();
   return BezierSurface(std::move(net), std::move(weights));
 }

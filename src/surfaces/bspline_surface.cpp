@@ -7,9 +7,9 @@
 #include <utility>
 
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/core/model_numbers.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "../core/homogeneous.hpp"
-#include "../core/number_text.hpp"
 #include "surface_checks.hpp"
 
 namespace casteljau {
@@ -25,10 +25,22 @@ Status check_surface_weights(std::span<const double> weights, const ControlNet& 
                  std::to_string(net.columns()) + "), there must be one weight per control point"};
   }
   for (std::size_t k = 0; k < count; ++k) {
-    const std::string name = "weight [" + std::to_string(k / net.columns()) + "][" +
-                             std::to_string(k % net.columns()) + "]";
-    if (auto ok = check_finite(weights[k], name); !ok) return ok;
-    if (!(weights[k] > 0.0)) return Error{name + " is " + number_text(weights[k]) + ", weights must be > 0"};
+    if (is_valid_weight(weights[k])) continue;  // the name is built only for a weight that fails
+    return check_weight(weights[k], "weight [" + std::to_string(k / net.columns()) + "][" +
+                                        std::to_string(k % net.columns()) + "]");
+  }
+  return {};
+}
+
+Status check_net_coordinates(const ControlNet& net) {
+  const std::span<const double> coordinates = net.points().coordinates();
+  const std::size_t d = static_cast<std::size_t>(net.dimension());
+  for (std::size_t k = 0; k < coordinates.size(); ++k) {
+    if (is_valid_coordinate(coordinates[k])) continue;
+    const std::size_t point = k / d;
+    return check_coordinate(coordinates[k], "coordinate " + std::to_string(k % d) + " of control point [" +
+                                                std::to_string(point / net.columns()) + "][" +
+                                                std::to_string(point % net.columns()) + "]");
   }
   return {};
 }
@@ -54,6 +66,7 @@ Expected<BSplineSurface> BSplineSurface::make(int degree_u, int degree_v, std::v
                    std::to_string(degrees[k] + 1)};
     }
   }
+  if (auto ok = detail::check_net_coordinates(net); !ok) return ok.error();
   if (auto ok = validate_knots(knots_u, degree_u, net.rows()); !ok) {
     return Error{"knots_u: " + ok.error().message};
   }
@@ -71,8 +84,8 @@ BSplineSurface BSplineSurface::from_trusted(int degree_u, int degree_v, std::vec
   assert(degree_u >= 0 && degree_v >= 0);
   assert(net.rows() >= static_cast<std::size_t>(degree_u) + 1);
   assert(net.columns() >= static_cast<std::size_t>(degree_v) + 1);
-  assert(validate_knots(knots_u, degree_u, net.rows()).has_value());
-  assert(validate_knots(knots_v, degree_v, net.columns()).has_value());
+  assert(check_knot_structure(knots_u, degree_u, net.rows()).has_value());
+  assert(check_knot_structure(knots_v, degree_v, net.columns()).has_value());
   assert(weights.empty() || weights.size() == net.rows() * net.columns());
   return BSplineSurface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), std::move(net),
                         std::move(weights));

@@ -36,14 +36,19 @@ svg_texts "$work/r.svg" | grep -qx $'\u221260' ||
   { echo "FAIL: the y axis of the Runge plot does not reach -60: $(svg_texts "$work/r.svg" | tr '\n' ' ')"; failures=$((failures + 1)); }
 
 # --- extreme inputs: the error names the file (and the model) -----------------------
+# Coordinates beyond 1e100 are refused by the model's make() (core/tolerance.hpp,
+# kMaxCoordinate); the figure's own range checks are tested in plot_sources_test.cpp.
 model big.json '{"type":"bezier","control_points":[[-1e308,0],[1e308,1]]}'
-expect_error "too wide, named" "big.json: the points span x" plot "$work/big.json" -o "$work/x.svg"
+expect_error "too wide, named" "big.json, control_points: coordinate 0 of control point 0 is -1e+308, outside" \
+  plot "$work/big.json" -o "$work/x.svg"
 model two.json '{"models":[{"type":"bezier","control_points":[[0,0],[1,1]]},{"type":"bezier","control_points":[[0,-1e308],[1,1e308]]}]}'
-expect_error "too wide, model named" "two.json[1]: " plot "$work/two.json" -o "$work/x.svg"
+expect_error "too wide, model named" "two.json, models[1].control_points: coordinate 1 of control point 0 is -1e+308" \
+  plot "$work/two.json" -o "$work/x.svg"
 model near.json '{"type":"bezier","control_points":[[1e10,0],[1e10,1],[10000000001,1],[10000000001,0]]}'
 expect_error "cannot certify, named" "near.json: " plot "$work/near.json" -o "$work/x.svg"
 model surface.json '{"type":"bezier_surface","control_points":[[[0,0,0],[1,0,1e308]],[[0,1,0],[1e308,-1e308,1e308]]]}'
-expect_error "surface too wide, named" "surface.json: " plot "$work/surface.json" -o "$work/x.svg"
+expect_error "surface too wide, named" "surface.json, control_points: coordinate 2 of control point [0][1] is 1e+308" \
+  plot "$work/surface.json" -o "$work/x.svg"
 [[ -e "$work/x.svg" ]] && { echo "FAIL: a failed plot wrote x.svg"; failures=$((failures + 1)); }
 
 # --- figures that finish, or refuse at once ------------------------------------------

@@ -420,7 +420,7 @@ TEST(FitLeastSquaresOnKnots, BadInputNamesTheProblem) {
   EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3, {-1, 0, 0, 0, 5, 29.0 / 3, 29.0 / 3, 29.0 / 3, 29.0 / 3},
                                                 {}, FitEnds::interpolated)),
             "a fit with interpolated ends needs knots clamped at the first and last parameters (0 and "
-            "9.6666666666666661, degree + 1 = 4 copies each)");
+            "9.666666666666666, degree + 1 = 4 copies each)");
 }
 
 }  // namespace

@@ -299,7 +299,7 @@ TEST(Lagrange, RefusesBadInput) {
   EXPECT_EQ(e.error().message, "coordinate 1 of point 2 is NaN");
   e = interpolate_lagrange(PointArray::make(1, {0, 1}).value(), std::vector<double>{-1e308, 1e308});
   ASSERT_FALSE(e);
-  EXPECT_NE(e.error().message.find("too wide"), std::string::npos);
+  EXPECT_EQ(e.error().message, "parameter 0 is -1e+308, outside [-1e+100, 1e+100], the range of knots");
   auto c = chebyshev_parameters(1);
   ASSERT_FALSE(c);
   EXPECT_EQ(c.error().message, "Chebyshev parameters need a count of at least 2, got 1");

@@ -58,12 +58,16 @@ TEST(ParameterValues, ClosedAddsTheStepBackToTheFirstPoint) {
 }
 
 TEST(ParameterValues, HugeAndTinyCoordinatesNeitherOverflowNorUnderflow) {
-  for (const double scale : {1e-300, 1e-200, 1.0, 1e200, 1e300}) {
+  // Up to the largest valid coordinate (10 x 1e99 = tolerances::kMaxCoordinate).
+  for (const double scale : {1e-300, 1e-200, 1.0, 1e50, 1e99}) {
     const auto t = parameter_values(plane_points({0, 0, 3 * scale, 4 * scale, 3 * scale, 10 * scale}),
                                     Parameterization::chord_length);
     ASSERT_TRUE(t) << error_of(t);
     EXPECT_NEAR((*t)[1], 5.0 / 11.0, 1e-15) << scale;
   }
+  // Beyond it, the points are refused (core/model_numbers.hpp).
+  EXPECT_EQ(error_of(parameter_values(plane_points({0, 0, 3e200, 4e200}), Parameterization::chord_length)),
+            "coordinate 0 of point 1 is 3e+200, outside [-1e+100, 1e+100], the range of coordinates");
 }
 
 TEST(ParameterValues, RefusesCoincidentConsecutivePointsNamingThem) {

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "casteljau/core/expected.hpp"
+#include "casteljau/core/model_numbers.hpp"
 
 namespace casteljau::test {
 
@@ -67,6 +68,35 @@ inline rc::Gen<double> any_finite_double() {
   const auto plain = rc::gen::map(rc::gen::inRange(-100000, 100001), [](int i) { return i / 64.0; });
   return rc::gen::oneOf(from_bits, plain,
                         rc::gen::element(0.0, -0.0, 0.1, 1e-320, 1.7976931348623157e308, -2.2250738585072014e-308));
+}
+
+/// any_finite_double() within the range of model coordinates (core/
+/// model_numbers.hpp, which make() enforces): values beyond it are scaled by
+/// 2^-800, exactly, so every mantissa, subnormals and -0 still appear.
+inline rc::Gen<double> any_model_coordinate() {
+  return rc::gen::map(any_finite_double(), [](double x) { return is_valid_coordinate(x) ? x : std::ldexp(x, -800); });
+}
+
+/// A knot of every mantissa and sign, 0 included, its binary exponent folded
+/// into [-330, 330): within the range of knots and never closer to 0 than
+/// the narrowest knot span (2^-331 > 1e-100), so that sorted random knots are
+/// rarely closer together than it.
+inline rc::Gen<double> any_model_knot() {
+  return rc::gen::map(any_finite_double(), [](double x) {
+    int e = 0;
+    const double m = std::frexp(x, &e);
+    return m == 0.0 ? x : std::ldexp(m, ((e % 660) + 660) % 660 - 330);
+  });
+}
+
+/// A weight of every mantissa, its binary exponent folded into [-150, 150):
+/// within [kMinWeight, kMaxWeight] (2^-151 > 1e-50, 2^150 < 1e50).
+inline rc::Gen<double> any_model_weight() {
+  return rc::gen::map(any_finite_double(), [](double x) {
+    int e = 0;
+    const double m = std::frexp(std::abs(x), &e);
+    return m == 0.0 ? 1.0 : std::ldexp(m, ((e % 300) + 300) % 300 - 150);
+  });
 }
 
 /// The message with which `made` (a make() given bad values) refuses them;

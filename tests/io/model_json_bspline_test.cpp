@@ -151,14 +151,13 @@ RC_GTEST_PROP(ModelJsonBSpline, RoundTripIsBitExact, ()) {
   const int count = p + 1 + *rc::gen::inRange(0, 5);
   const int d = *rc::gen::inRange(1, 4);
   auto knots = *rc::gen::container<std::vector<double>>(static_cast<std::size_t>(count + p + 1),
-                                                         test::any_finite_double());
+                                                         test::any_model_knot());
   std::sort(knots.begin(), knots.end());
   auto coordinates =
-      *rc::gen::container<std::vector<double>>(static_cast<std::size_t>(count * d), test::any_finite_double());
+      *rc::gen::container<std::vector<double>>(static_cast<std::size_t>(count * d), test::any_model_coordinate());
   std::vector<double> weights;
   if (*rc::gen::arbitrary<bool>()) {
-    weights = *rc::gen::container<std::vector<double>>(static_cast<std::size_t>(count), test::any_finite_double());
-    for (double& w : weights) w = w == 0.0 ? 1.0 : std::abs(w);
+    weights = *rc::gen::container<std::vector<double>>(static_cast<std::size_t>(count), test::any_model_weight());
   }
   auto curve = BSplineCurve::make(p, std::move(knots), PointArray::make(d, std::move(coordinates)).value(),
                                   std::move(weights));

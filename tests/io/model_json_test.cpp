@@ -303,25 +303,24 @@ TEST(ModelJson, WritesOneLineWithShortestNumbers) {
             R"({"type":"bezier","control_points":[[0,0],[1,2.5],[0.1,-0.0]]})");
   EXPECT_EQ(to_json(Model{curve(2, {1, 0, 1, 1, 0, 1}, {1, 0.7071067811865476, 1})}),
             R"({"type":"bezier","control_points":[[1,0],[1,1],[0,1]],"weights":[1,0.7071067811865476,1]})");
-  const auto piecewise = PiecewiseBezierCurve::make({curve(1, {0, 1}), curve(1, {1, 2, 3}, {1, 1e-300, 2})}).value();
+  const auto piecewise = PiecewiseBezierCurve::make({curve(1, {0, 1}), curve(1, {1, 2, 3}, {1, 1e-50, 2})}).value();
   EXPECT_EQ(
       to_json(Model{piecewise}),
-      R"({"type":"piecewise_bezier","pieces":[[[0],[1]],{"type":"bezier","control_points":[[1],[2],[3]],"weights":[1,1e-300,2]}]})");
+      R"({"type":"piecewise_bezier","pieces":[[[0],[1]],{"type":"bezier","control_points":[[1],[2],[3]],"weights":[1,1e-50,2]}]})");
   EXPECT_EQ(models_to_json({Model{curve(1, {0})}}), "{\"type\":\"bezier\",\"control_points\":[[0]]}\n");
   EXPECT_EQ(models_to_json({Model{curve(1, {0})}, Model{curve(1, {1})}}),
             "{\"models\":[\n{\"type\":\"bezier\",\"control_points\":[[0]]},\n"
             "{\"type\":\"bezier\",\"control_points\":[[1]]}\n]}\n");
 }
 
-/// Any model, coordinates of every bit pattern, weights > 0.
+/// Any model, coordinates and weights of every mantissa within their ranges.
 rc::Gen<BezierCurve> any_curve(int d) {
   return rc::gen::exec([d] {
     const int n = *rc::gen::inRange(0, 6);
-    auto c = *rc::gen::container<std::vector<double>>((n + 1) * d, test::any_finite_double());
+    auto c = *rc::gen::container<std::vector<double>>((n + 1) * d, test::any_model_coordinate());
     std::vector<double> weights;
     if (*rc::gen::arbitrary<bool>()) {
-      weights = *rc::gen::container<std::vector<double>>(
-          n + 1, rc::gen::map(test::any_finite_double(), [](double w) { return w > 0 ? w : (w < 0 ? -w : 1.0); }));
+      weights = *rc::gen::container<std::vector<double>>(n + 1, test::any_model_weight());
     }
     return curve(d, std::move(c), std::move(weights));
   });

@@ -359,8 +359,14 @@ TEST(Conics, RefuseBadInput) {
   expect_error(make_circle(ConicFrame{{0}, {1}, {1}}, 1.0), "a conic needs a plane");
   expect_error(make_ellipse(0, 0, 1.0, 0.0), "the semi-axis along y is 0");
   expect_error(make_ellipse(0, 0, -2.0, 1.0), "the semi-axis along x is -2");
-  // r / cos(dθ/2) overflows for a radius near the largest double.
-  expect_error(make_arc(0, 0, 1.79e308, 0.1, 3.0), "is too large: the control points at distance r / 0.73");
+  // Radii and centres are coordinates (core/tolerance.hpp: kMaxCoordinate),
+  // and the control points r / cos(dθ/2) from the centre must be too.
+  expect_error(make_arc(0, 0, 1.79e308, 0.1, 3.0),
+               "the radius is 1.79e+308, outside (0, 1e+100], the range of coordinates");
+  expect_error(make_circle(0, 1e308, 1.0), "coordinate 1 of the centre is 1e+308, outside [-1e+100, 1e+100]");
+  expect_error(make_arc(0, 0, 1e100, -0.5, 1.0), "the conic reaches outside the range of coordinates: coordinate 0 "
+                                                 "of control point 1 is 1.139");
+  expect_error(make_ellipse(0, 0, 1.0, 2e100), "the semi-axis along y is 2e+100, outside (0, 1e+100]");
 }
 
 TEST(Conics, AxesOffByRoundingAreAccepted) {

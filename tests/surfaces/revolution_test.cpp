@@ -170,8 +170,8 @@ TEST(Revolve, RefusesBadInput) {
   EXPECT_EQ(message(revolve(space, origin, zero, 1.0)),
             "the axis direction is the zero vector (or too large to normalize), it must give a direction");
   EXPECT_EQ(message(revolve(space, std::vector<double>{0, 0}, z, 1.0)), "the axis point has 2 coordinates, it needs 3");
-  EXPECT_EQ(message(revolve(space, origin, z, 0.0)), "the angle is 0, it must be > 0 and at most 2π (6.2831853071795862)");
-  EXPECT_EQ(message(revolve(space, origin, z, 7.0)), "the angle is 7, it must be > 0 and at most 2π (6.2831853071795862)");
+  EXPECT_EQ(message(revolve(space, origin, z, 0.0)), "the angle is 0, it must be > 0 and at most 2π (6.283185307179586)");
+  EXPECT_EQ(message(revolve(space, origin, z, 7.0)), "the angle is 7, it must be > 0 and at most 2π (6.283185307179586)");
   EXPECT_EQ(message(revolve(space, origin, z, std::nan(""))), "the angle is NaN");
   EXPECT_EQ(message(make_sphere(origin, 0.0)), "the radius is 0, it must be finite and > 0");
   EXPECT_EQ(message(make_sphere(std::vector<double>{0, 0}, 1.0)), "the centre has 2 coordinates, it needs 3");

@@ -16,9 +16,12 @@ namespace casteljau {
 class BezierCurve {
  public:
   /// Validates and builds: at least one control point and at most
-  /// tolerances::kMaxBezierDegree + 1, all coordinates finite,
-  /// and `weights` either empty (polynomial) or one finite weight > 0 per point.
-  /// Errors name the field: "weight 2 is -1, weights must be > 0".
+  /// tolerances::kMaxBezierDegree + 1, every coordinate a valid coordinate
+  /// (finite, within tolerances::kMaxCoordinate: check_coordinates), and
+  /// `weights` either empty (polynomial) or one valid weight per point
+  /// (within [kMinWeight, kMaxWeight]: check_weight). Such a curve's points
+  /// and first derivatives are finite on [0, 1] (core/tolerance.hpp says
+  /// why). Errors name the field: "weight 2 is -1, weights must be > 0".
   static Expected<BezierCurve> make(PointArray control_points, std::vector<double> weights = {});
 
   /// For control points computed by casteljau itself (asserts the invariants).

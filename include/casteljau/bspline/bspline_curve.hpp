@@ -24,14 +24,20 @@ namespace casteljau {
 class BSplineCurve {
  public:
   /// Validates and builds: 0 <= p <= tolerances::kMaxBSplineDegree, at least
-  /// p+1 control points (at most tolerances::kMaxControlPoints), all
-  /// coordinates finite, knots as validate_knots requires, and `weights`
-  /// empty (polynomial) or one finite weight > 0 per control point.
+  /// p+1 control points (at most tolerances::kMaxControlPoints), every
+  /// coordinate valid (finite, within tolerances::kMaxCoordinate:
+  /// check_coordinates), knots as validate_knots requires, and `weights`
+  /// empty (polynomial) or one valid weight per control point (within
+  /// [kMinWeight, kMaxWeight]: check_weight). Such a curve's points and first
+  /// derivatives are finite on its domain (core/tolerance.hpp says why).
   /// Errors name the field: "weight 2 is -1, weights must be > 0".
   static Expected<BSplineCurve> make(int degree, std::vector<double> knots, PointArray control_points,
                                      std::vector<double> weights = {});
 
-  /// For data computed by casteljau itself (asserts the invariants).
+  /// For data computed by casteljau itself (asserts the shape and
+  /// check_knot_structure; computed curves, such as a derivative curve or a
+  /// curve with a knot inserted next to another, may go beyond the ranges
+  /// make() accepts from outside).
   static BSplineCurve from_trusted(int degree, std::vector<double> knots, PointArray control_points,
                                    std::vector<double> weights = {});
 

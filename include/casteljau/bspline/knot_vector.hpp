@@ -16,11 +16,22 @@
 namespace casteljau {
 
 /// Checks the knots of a B-spline of degree p >= 0 with `control_point_count`
-/// = n+1 control points (The NURBS Book §2.2, §3.2): exactly n+p+2 knots, all
-/// finite, non-decreasing, no knot of multiplicity above p+1, and a non-empty
-/// domain t_p < t_{n+1}. Errors name the offending index: "knot 4 (0.5) is
-/// smaller than knot 3 (0.7), knots must be non-decreasing".
+/// = n+1 control points (The NURBS Book §2.2, §3.2), as make() accepts them
+/// from outside: exactly n+p+2 knots, each a valid knot (finite, |t| <=
+/// tolerances::kMaxKnot, so the whole vector's width is finite), non-decreasing,
+/// no knot of multiplicity above p+1, a non-empty domain t_p < t_{n+1}, and
+/// every non-empty span t_{i+1} - t_i at least tolerances::kMinKnotSpan wide
+/// (its reciprocal, times p, representable with room for the coordinates:
+/// core/tolerance.hpp). Errors name the offending indices: "knot 4 (0.5) is
+/// smaller than knot 3 (0.7), knots must be non-decreasing", "knots 1 and 2
+/// (0 and 5e-324) are 5e-324 apart, less than the narrowest knot span 1e-100".
 Status validate_knots(std::span<const double> knots, int degree, std::size_t control_point_count);
+
+/// The structure alone, what from_trusted asserts of computed knots: the
+/// count, finite, non-decreasing, multiplicities at most p+1, a non-empty
+/// domain. Computed knots may go beyond validate_knots' ranges (a knot
+/// inserted next to another); the evaluators stay finite for their points.
+Status check_knot_structure(std::span<const double> knots, int degree, std::size_t control_point_count);
 
 /// Clamped (open) knots with uniform interior spacing over `domain`: p+1
 /// copies of each end, n-p evenly spaced interior knots (The NURBS Book eq.

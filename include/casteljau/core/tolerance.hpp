@@ -75,6 +75,60 @@ inline constexpr double kOrthonormalAxes = 1e-12;
 /// subnormal range, where a quotient by it would overflow. Unit: model units.
 inline constexpr double kScaleFloor = 1e-300;
 
+// --- Valid model numbers (core/model_numbers.hpp) -----------------------------
+// The ranges every make() accepts, chosen so that a valid curve or surface
+// never fails to evaluate: its points and first derivatives are finite
+// everywhere on its domain. They share out double's exponent range (up to
+// DBL_MAX = 1.8e308). The first derivative of a degree-p B-spline or NURBS
+// curve is computed from its de Boor triangle as (Q1 - Q0) (p / h) on rows
+// (w P, w), h the width of the span, then C' = (A' - w' C) / w (The NURBS
+// Book eq. 4.8), so
+//   |C'| <= 4 p (w_max / w_min) M / h,   intermediates <= 4 p w_max M / h,
+// M the largest coordinate. With p <= kMaxBSplineDegree (1e4), weights in
+// [kMinWeight, kMaxWeight] (a ratio up to 1e100), M <= kMaxCoordinate and
+// h >= kMinKnotSpan: |C'| <= 4e4 * 1e100 * 1e100 / 1e-100 = 4e304, and the
+// intermediates stay below 4e254. A Bézier curve is the case h = 1, each
+// partial derivative of a surface the case of its direction's degree and
+// spans. Orders >= 2 grow like (2p/h)^k M: finite for any ordinary data, but
+// at the corners of these ranges they can overflow to +-inf, as can products
+// of two first derivatives (normals, curvature), which must be scaled first.
+// Coordinates below kScaleFloor, subnormals included, are valid (they
+// evaluate to finite values; relative comparisons treat them as scale 0).
+
+/// Largest absolute coordinate of a control point (and of the points,
+/// tangents, conic centres and radii the constructions take). 1e100: a third
+/// of the exponent range (see above), far beyond any geometry (the
+/// observable universe is 1e27 m), and squares of coordinate differences
+/// (squared distances, dot and cross products of chords: <= 4e200 d) stay
+/// finite. Unit: model units.
+inline constexpr double kMaxCoordinate = 1e100;
+
+/// Largest absolute knot, and parameter value of interpolation and fitting
+/// (parameters become knots). 1e100 keeps sums and differences of knots
+/// finite (the domain's width, midpoints (a + b) / 2, reversal's
+/// (a + b) - t), and the width of a knot vector at most 2e200 times its
+/// narrowest span, so that a parameter normalized to [0, 1] (Coons
+/// boundaries, tessellation cells) still has normal-number spans (>= 5e-201).
+/// Unit: parameter units.
+inline constexpr double kMaxKnot = 1e100;
+
+/// Narrowest non-empty knot span t_{i+1} - t_i > 0, and the closest two
+/// parameters of interpolation and fitting may be. 1e-100: its reciprocal
+/// (1e100) and p times it are representable with room for the coordinate
+/// and weight ranges (see above); spans of a subnormal width (5e-324,
+/// 1e-310) have no finite reciprocal at all. Spans of one ulp of ordinary
+/// knots (1 and nextafter(1, 2): 2.2e-16) are far above it. Unit: parameter
+/// units.
+inline constexpr double kMinKnotSpan = 1e-100;
+
+/// Smallest and largest weight of a NURBS (rational) curve or surface. The
+/// ratio of any two weights is then at most 1e100 (no separate ratio bound
+/// is needed, see above), and w P stays within 1e150. Weights that matter
+/// in design lie within 1e-3..1e3; a weight of 1e-320 is positive but
+/// subnormal, and 1/w overflows. Dimensionless.
+inline constexpr double kMinWeight = 1e-50;
+inline constexpr double kMaxWeight = 1e50;
+
 /// Largest gap allowed where two curves or Bézier pieces are joined end to
 /// start (join, from_bezier_pieces), relative to the larger of their scales
 /// (scale_of of the control points, at least kScaleFloor so that curves at

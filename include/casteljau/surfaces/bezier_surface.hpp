@@ -15,8 +15,8 @@ namespace casteljau {
 class BezierSurface {
  public:
   /// Validates and builds: degrees up to tolerances::kMaxBezierDegree in each
-  /// direction; weights empty or one finite weight > 0 per control point, row
-  /// by row (errors as BSplineSurface::make).
+  /// direction; every coordinate valid and weights empty or one valid weight
+  /// per control point, row by row (errors as BSplineSurface::make).
   static Expected<BezierSurface> make(ControlNet net, std::vector<double> weights = {});
   /// For data computed by casteljau itself (asserts the invariants).
   static BezierSurface from_trusted(ControlNet net, std::vector<double> weights = {});

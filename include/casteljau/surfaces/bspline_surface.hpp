@@ -29,16 +29,21 @@ enum class Direction { u, v };
 class BSplineSurface {
  public:
   /// Validates and builds: each degree in [0, tolerances::kMaxBSplineDegree];
-  /// at least p+1 rows and q+1 columns; each knot vector as validate_knots
-  /// requires for its count (errors say which: "knots_v: knot 4 (0.5) is
-  /// smaller than knot 3 (0.7), knots must be non-decreasing"); `weights`
-  /// empty or one finite weight > 0 per control point, row by row ("weight
+  /// at least p+1 rows and q+1 columns; every coordinate valid (finite,
+  /// within tolerances::kMaxCoordinate: "coordinate 2 of control point [1][3]
+  /// is 1e+308, outside [-1e+100, 1e+100], the range of coordinates"); each
+  /// knot vector as validate_knots requires for its count (errors say which:
+  /// "knots_v: knot 4 (0.5) is smaller than knot 3 (0.7), knots must be
+  /// non-decreasing"); `weights` empty or one valid weight (within
+  /// [kMinWeight, kMaxWeight]) per control point, row by row ("weight
   /// [2][1] is -1, weights must be > 0"; "the weights have 11 entries, the
-  /// control net has 12 points").
+  /// control net has 12 points"). Such a surface's points and first partial
+  /// derivatives are finite on its domain (core/tolerance.hpp says why).
   static Expected<BSplineSurface> make(int degree_u, int degree_v, std::vector<double> knots_u,
                                        std::vector<double> knots_v, ControlNet net,
                                        std::vector<double> weights = {});
-  /// For data computed by casteljau itself (asserts the invariants).
+  /// For data computed by casteljau itself (asserts the shape and
+  /// check_knot_structure of both knot vectors).
   static BSplineSurface from_trusted(int degree_u, int degree_v, std::vector<double> knots_u,
                                      std::vector<double> knots_v, ControlNet net,
                                      std::vector<double> weights = {});
