@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/core/vec.hpp"
 
 namespace casteljau {
 namespace {
@@ -28,14 +29,9 @@ struct EdgeUse {
 /// cross product of two edges is at most a few ulps (tolerances::kRoundingSlack)
 /// of the product of their lengths, i.e. the sine of the angle between them.
 bool has_zero_area(const PointArray& vertices, const std::array<std::uint32_t, 3>& triangle) {
-  const auto a = vertices[triangle[0]], b = vertices[triangle[1]], c = vertices[triangle[2]];
-  const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double cross[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
-  const double area = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
-  const double lengths = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) *
-                         std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-  return area <= tolerances::kRoundingSlack * lengths;
+  const Vec3 a = vertices.vec<3>(triangle[0]);
+  const Vec3 e = vertices.vec<3>(triangle[1]) - a, f = vertices.vec<3>(triangle[2]) - a;
+  return norm(cross(e, f)) <= tolerances::kRoundingSlack * norm(e) * norm(f);
 }
 
 }  // namespace

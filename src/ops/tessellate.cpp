@@ -42,6 +42,7 @@
 //    holds for the triangles actually written, neighbours' vertices included.
 #include "casteljau/ops/tessellate.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/core/vec.hpp"
 
 #include <algorithm>
 #include <array>
@@ -72,15 +73,7 @@ constexpr int kGrid = 7;
 /// backwards.
 constexpr std::array<double, 7> kEdgeSamples = {0.0, 0.1234, 0.3141, 0.5, 0.6859, 0.8766, 1.0};
 
-using Vec3 = std::array<double, 3>;
-
-Vec3 to_vec3(const Point& p) { return {p[0], p[1], p[2]}; }
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+Vec3 to_vec3(const Point& p) { return Vec3::from(p); }
 
 /// Angle between two unit normals, 0 when either is the zero vector (no
 /// normal exists there, nothing to compare).
@@ -175,7 +168,7 @@ EdgeStructure analyse_edges(const std::vector<Patch>& patches, double match_dist
   edges.degenerate.assign(sides, false);
   for (std::size_t a = 0; a < sides; ++a) {
     bool collapsed = true;
-    for (const Vec3& point : samples[a]) collapsed = collapsed && norm(minus(point, samples[a][0])) <= match_distance;
+    for (const Vec3& point : samples[a]) collapsed = collapsed && norm(point - samples[a][0]) <= match_distance;
     edges.degenerate[a] = collapsed;
   }
   const std::size_t n = kEdgeSamples.size();
@@ -193,8 +186,8 @@ EdgeStructure analyse_edges(const std::vector<Patch>& patches, double match_dist
       if (edges.degenerate[b]) continue;
       bool forward = true, backward = true;
       for (std::size_t i = 0; i < n; ++i) {
-        forward = forward && norm(minus(samples[a][i], samples[b][i])) <= match_distance;
-        backward = backward && norm(minus(samples[a][i], samples[b][n - 1 - i])) <= match_distance;
+        forward = forward && norm(samples[a][i] - samples[b][i]) <= match_distance;
+        backward = backward && norm(samples[a][i] - samples[b][n - 1 - i]) <= match_distance;
       }
       if (!forward && !backward) continue;
       const bool flip = !forward;
@@ -207,7 +200,7 @@ EdgeStructure analyse_edges(const std::vector<Patch>& patches, double match_dist
   // Two collapsed sides at the same point (the poles of two half spheres).
   for (std::size_t a = 0; a < sides; ++a) {
     for (std::size_t b = a + 1; b < sides && edges.degenerate[a]; ++b) {
-      if (edges.degenerate[b] && norm(minus(samples[a][0], samples[b][0])) <= match_distance) {
+      if (edges.degenerate[b] && norm(samples[a][0] - samples[b][0]) <= match_distance) {
         corners.unite(corner_id(a, false), corner_id(b, false));
       }
     }
@@ -252,7 +245,7 @@ struct LoopVertex {
 struct Assembly {
   std::uint32_t add_vertex(const Vec3& position) {
     positions.push_back(position);
-    normals.push_back({0.0, 0.0, 0.0});
+    normals.push_back(Vec3{});
     return static_cast<std::uint32_t>(positions.size() - 1);
   }
   void add_normal(std::uint32_t vertex, const Point& normal) {
@@ -402,7 +395,7 @@ class Tessellator {
     patch.surface.grid_points_at(us, vs, grid);
     const auto at = [&grid](int a, int b) {
       const double* q = grid.data() + (a * kGrid + b) * 3;
-      return Vec3{q[0], q[1], q[2]};
+      return Vec3{{q[0], q[1], q[2]}};
     };
     constexpr int last = kGrid - 1, mid = kGrid / 2;
     // The fan's vertices in (fraction_u, fraction_v): centre, then corners.
@@ -429,19 +422,19 @@ class Tessellator {
         const double lc = 1.0 - l0 - l1;
         const Vec3& p0 = corner[t];
         const Vec3& p1 = corner[(t + 1) % 4];
-        const Vec3 linear = {lc * centre[0] + l0 * p0[0] + l1 * p1[0], lc * centre[1] + l0 * p0[1] + l1 * p1[1],
-                             lc * centre[2] + l0 * p0[2] + l1 * p1[2]};
-        error = std::max(error, norm(minus(at(a, b), linear)));
+        const Vec3 linear{{lc * centre[0] + l0 * p0[0] + l1 * p1[0], lc * centre[1] + l0 * p0[1] + l1 * p1[1],
+                           lc * centre[2] + l0 * p0[2] + l1 * p1[2]}};
+        error = std::max(error, norm(at(a, b) - linear));
       }
     }
     // How much the mid-lines bend in each direction.
     double bend_u = 0.0, bend_v = 0.0;
     for (const int k : {0, mid, last}) {
       const Vec3 a = at(0, k), b = at(last, k), c = at(k, 0), d = at(k, last);
-      const Vec3 chord_u = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
-      const Vec3 chord_v = {(c[0] + d[0]) / 2, (c[1] + d[1]) / 2, (c[2] + d[2]) / 2};
-      bend_u = std::max(bend_u, norm(minus(at(mid, k), chord_u)));
-      bend_v = std::max(bend_v, norm(minus(at(k, mid), chord_v)));
+      const Vec3 chord_u{{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}};
+      const Vec3 chord_v{{(c[0] + d[0]) / 2, (c[1] + d[1]) / 2, (c[2] + d[2]) / 2}};
+      bend_u = std::max(bend_u, norm(at(mid, k) - chord_u));
+      bend_v = std::max(bend_v, norm(at(k, mid) - chord_v));
     }
     const Vec3 n00 = to_vec3(patch.surface.normal_at(ua, va)), n10 = to_vec3(patch.surface.normal_at(ub, va));
     const Vec3 n01 = to_vec3(patch.surface.normal_at(ua, vb)), n11 = to_vec3(patch.surface.normal_at(ub, vb));
@@ -731,7 +724,7 @@ class Tessellator {
     const double limit = tolerances::kMeshSampledDeviationFraction * tolerance_;
     for (const auto& w : kWeights) {
       double u = 0.0, v = 0.0;
-      Vec3 linear = {0.0, 0.0, 0.0};
+      Vec3 linear{};
       for (int k = 0; k < 3; ++k) {
         const LoopVertex& corner = triangle.corners[k];
         u += w[k] * corner.u;
@@ -739,7 +732,7 @@ class Tessellator {
         const Vec3& x = assembly_.position(corner.vertex);
         for (int c = 0; c < 3; ++c) linear[c] += w[k] * x[c];
       }
-      if (norm(minus(to_vec3(surface.point_at(u, v)), linear)) > limit) return false;
+      if (norm(to_vec3(surface.point_at(u, v)) - linear) > limit) return false;
     }
     return true;
   }
@@ -748,18 +741,16 @@ class Tessellator {
     TriangleMesh mesh;
     const std::size_t n = assembly_.vertex_count();
     std::vector<double> positions(n * 3), normals(n * 3);
-    std::vector<Vec3> face_sums(n, Vec3{0.0, 0.0, 0.0});
+    std::vector<Vec3> face_sums(n, Vec3{});
     mesh.triangles.reserve(triangles_.size());
     for (const Triangle& triangle : triangles_) {
       const std::array<std::uint32_t, 3> t = {triangle.corners[0].vertex, triangle.corners[1].vertex,
                                               triangle.corners[2].vertex};
       mesh.triangles.push_back(t);
       // Area-weighted face normals: the fallback where the surface has none.
-      const Vec3 face = cross(minus(assembly_.position(t[1]), assembly_.position(t[0])),
-                              minus(assembly_.position(t[2]), assembly_.position(t[0])));
-      for (const std::uint32_t vertex : t) {
-        for (int c = 0; c < 3; ++c) face_sums[vertex][c] += face[c];
-      }
+      const Vec3 face = cross(assembly_.position(t[1]) - assembly_.position(t[0]),
+                              assembly_.position(t[2]) - assembly_.position(t[0]));
+      for (const std::uint32_t vertex : t) face_sums[vertex] += face;
     }
     for (std::size_t i = 0; i < n; ++i) {
       Vec3 normal = assembly_.normals[i];
