@@ -3,7 +3,8 @@
 // undirected pair (smaller index first) puts the uses of one edge side by
 // side, and each run tells boundary (1 use), manifold (2 uses, opposite
 // directions), inconsistently oriented (2 uses, same direction) or
-// non-manifold (3 or more).
+// non-manifold (3 or more). has_zero_area is the rounding test of a
+// triangle's area that it and the tessellator share.
 #include "casteljau/ops/mesh.hpp"
 
 #include <algorithm>
@@ -25,19 +26,16 @@ struct EdgeUse {
   bool forward = false;
 };
 
-/// True when the triangle's vertices are (to rounding) on one line: the
-/// cross product of two edges is at most a few ulps (tolerances::kRoundingSlack)
-/// of the product of their lengths, i.e. the sine of the angle between them.
-bool has_zero_area(const PointArray& vertices, const std::array<std::uint32_t, 3>& triangle) {
-  const Vec3 a = vertices.vec<3>(triangle[0]);
-  const Vec3 e = vertices.vec<3>(triangle[1]) - a, f = vertices.vec<3>(triangle[2]) - a;
+}  // namespace
+
+bool has_zero_area(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e = b - a, f = c - a;
   return norm(cross(e, f)) <= tolerances::kRoundingSlack * norm(e) * norm(f);
 }
 
-}  // namespace
-
 MeshTopology mesh_topology(const TriangleMesh& mesh) {
   MeshTopology topology;
+  topology.triangles = mesh.triangles.size();
   std::vector<EdgeUse> uses;
   uses.reserve(mesh.triangles.size() * 3);
   for (const auto& triangle : mesh.triangles) {
@@ -46,7 +44,10 @@ MeshTopology mesh_topology(const TriangleMesh& mesh) {
       ++topology.degenerate_triangles;
       continue;
     }
-    if (has_zero_area(mesh.vertices, triangle)) ++topology.degenerate_triangles;
+    const PointArray& x = mesh.vertices;
+    if (has_zero_area(x.vec<3>(triangle[0]), x.vec<3>(triangle[1]), x.vec<3>(triangle[2]))) {
+      ++topology.degenerate_triangles;
+    }
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t from = triangle[k], to = triangle[(k + 1) % 3];
       uses.push_back(EdgeUse{std::min(from, to), std::max(from, to), from < to});
