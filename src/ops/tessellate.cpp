@@ -2,6 +2,10 @@
 //
 // Method (docs/surfaces.md has the long form), with the file of each step:
 //
+// 0. Before any refinement, a lower bound on the cells every knot span needs,
+//    from chord deviations sampled on a grid of subcells; a request whose
+//    bound already exceeds tolerances::kMaxMeshTriangles is refused at once,
+//    with the tolerance that would fit (tessellate_estimate.hpp).
 // 1. Per patch, a quadtree over the parameter domain whose roots are the knot
 //    spans, addressed by integers so that neighbours agree exactly on shared
 //    vertices (tessellate_quadtree.hpp).
@@ -23,7 +27,11 @@
 // 6. Every final triangle is sampled against the surface at the linearly
 //    interpolated parameters; cells whose triangles miss are split and
 //    steps 4-6 repeat, so the check holds for the triangles actually written,
-//    neighbours' vertices included (tessellate_refinement.hpp).
+//    neighbours' vertices included (tessellate_refinement.hpp). A patch none
+//    of whose triangles has an area (a point, a curve) is refused, named.
+//
+// The caller's Progress hears the refinement (weighted by the estimate) and
+// each assembly pass (tessellate_progress.hpp).
 #include "casteljau/ops/tessellate.hpp"
 
 #include <algorithm>
@@ -38,6 +46,8 @@
 #include "../core/number_text.hpp"
 #include "tessellate_assembly.hpp"
 #include "tessellate_edges.hpp"
+#include "tessellate_estimate.hpp"
+#include "tessellate_progress.hpp"
 #include "tessellate_quadtree.hpp"
 #include "tessellate_refinement.hpp"
 
@@ -45,28 +55,129 @@ namespace casteljau {
 namespace {
 
 using tessellation::Cell;
+using tessellation::CellEstimate;
 using tessellation::EdgeStructure;
 using tessellation::MeshAssembly;
 using tessellation::Patch;
+using tessellation::TessellationProgress;
 using tessellation::Triangle;
+
+/// The share of the progress that the refinement of step 2 owns; the
+/// assembly passes (steps 4-6) own the rest, each half of what remains (their
+/// number is known only at the end). Measured on the sphere: the first
+/// refinement takes about a quarter of the time.
+constexpr double kRefinementShare = 0.3;
+
+/// The points of a patch on a 9 x 9 grid over its domain (x, y, z each).
+std::vector<double> sample_grid(const SurfaceView& patch) {
+  constexpr int kSamples = 9;
+  std::array<double, kSamples> us{}, vs{};
+  for (int k = 0; k < kSamples; ++k) {
+    us[k] = patch.domain_u().lerp(static_cast<double>(k) / (kSamples - 1));
+    vs[k] = patch.domain_v().lerp(static_cast<double>(k) / (kSamples - 1));
+  }
+  std::vector<double> grid(kSamples * kSamples * 3);
+  patch.grid_points_at(us, vs, grid);
+  return grid;
+}
+
+/// The largest absolute coordinate of the patches on their sample grids:
+/// the scale of the relative limits (tolerance floor, edge matching).
+double scale_of_patches(std::span<const SurfaceView> patches) {
+  double scale = 0.0;
+  for (const SurfaceView& patch : patches) {
+    for (const double x : sample_grid(patch)) scale = std::max(scale, std::abs(x));
+  }
+  return scale;
+}
+
+/// x rounded up to two significant digits, as text: a tolerance to suggest.
+std::string rounded_up(double x) {
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
+  return detail::number_text(std::ceil(x / unit * (1.0 - 1e-12)) * unit);
+}
+
+/// Refuses, before any refinement, a request whose estimated cells
+/// (tessellate_estimate.hpp, a lower bound) already exceed the limit, naming
+/// the tolerance at which the estimate leaves tolerances::kMeshEstimateMargin
+/// for the real count.
+Status check_estimate(const CellEstimate& estimate, double tolerance) {
+  const double most_cells = static_cast<double>(tolerances::kMaxMeshTriangles) / 2.0;
+  const double cells = estimate.cells(tolerance);
+  if (cells <= most_cells) return {};
+  std::string message = "the tessellation needs at least " + std::to_string(static_cast<long long>(2.0 * cells)) +
+                        " triangles at tolerance " + detail::number_text(tolerance) +
+                        " (estimated from the surfaces' second differences), more than the limit of " +
+                        std::to_string(tolerances::kMaxMeshTriangles);
+  const double fits = estimate.tolerance_for(most_cells / tolerances::kMeshEstimateMargin);
+  if (std::isfinite(fits)) {
+    message += "; a tolerance of " + rounded_up(fits) + " or larger should fit";
+  } else {
+    message += "; the surfaces have " + std::to_string(estimate.roots()) +
+               " knot spans, too many to fit at any tolerance";
+  }
+  return Error{message};
+}
+
+/// A patch of the assembled mesh none of whose triangles has an area: the
+/// surface is a point or a curve, there is nothing to triangulate. Named with
+/// what it is, from its sample grid.
+Status check_degenerate_patches(const std::vector<Patch>& patches, const MeshAssembly& assembly,
+                                double match_distance) {
+  std::vector<bool> has_area(patches.size(), false);
+  for (const Triangle& triangle : assembly.triangles()) {
+    if (has_area[triangle.patch]) continue;
+    const auto& c = triangle.corners;
+    has_area[triangle.patch] = !has_zero_area(assembly.position(c[0].vertex), assembly.position(c[1].vertex),
+                                              assembly.position(c[2].vertex));
+  }
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    if (has_area[p]) continue;
+    const std::vector<double> grid = sample_grid(patches[p].surface);
+    const Vec3 first{{grid[0], grid[1], grid[2]}};
+    bool one_point = true;
+    for (std::size_t i = 0; i < grid.size(); i += 3) {
+      one_point = one_point && norm(Vec3{{grid[i], grid[i + 1], grid[i + 2]}} - first) <= match_distance;
+    }
+    const std::string what =
+        one_point ? "every point of it is (" + detail::number_text(first[0]) + ", " + detail::number_text(first[1]) +
+                        ", " + detail::number_text(first[2]) + "), and a point has no triangles"
+                  : "it has zero area (its points lie on one curve), so it has no triangles";
+    return Error{"patch " + std::to_string(p) + " is degenerate: " + what};
+  }
+  return {};
+}
 
 /// Steps 1-6 for the patches: the cells, refined until the cell test and the
 /// triangle check pass, and their mesh.
-Expected<TriangleMesh> tessellate_patches(std::span<const SurfaceView> views, double tolerance,
-                                          double match_distance) {
-  std::vector<Patch> patches;
-  for (const SurfaceView& view : views) patches.emplace_back(view);
+Expected<TriangleMesh> tessellate_patches(const std::vector<Patch>& patches, const CellEstimate& estimate,
+                                          double tolerance, double match_distance, TessellationProgress& progress) {
   const EdgeStructure edges = tessellation::analyse_edges(patches, match_distance);
   std::vector<std::vector<Cell>> cells(patches.size());
   std::size_t cell_total = 0;
+  // The refinement's progress, shared among the roots by their estimated cells.
+  const double estimated = estimate.cells(tolerance);
+  double before = 0.0;
+  std::size_t root = 0;
   for (std::size_t p = 0; p < patches.size(); ++p) {
-    auto refined = tessellation::refine(patches[p], tolerance, patches[p].roots(), cells[p], cell_total);
+    std::vector<double> shares;
+    double patch_cells = 0.0;
+    const std::size_t roots = patches[p].roots().size();
+    for (std::size_t r = 0; r < roots; ++r) {
+      shares.push_back(estimate.root_cells(root++, tolerance));
+      patch_cells += shares.back();
+    }
+    for (double& share : shares) share /= patch_cells;
+    const double from = kRefinementShare * before / estimated;
+    before += patch_cells;
+    const tessellation::RefinementProgress stage{progress, from, kRefinementShare * before / estimated, shares};
+    auto refined = tessellation::refine(patches[p], tolerance, cells[p], cell_total, stage);
     if (!refined) return refined.error();
     cell_total += cells[p].size();
   }
   MeshAssembly assembly(patches, edges, cells);
-  for (;;) {
-    assembly.assemble();
+  for (double remaining = 1.0 - kRefinementShare;; remaining /= 2.0) {
+    assembly.assemble(progress, 1.0 - remaining, 1.0 - remaining / 2.0);
     std::vector<std::vector<bool>> failed(patches.size());
     bool any = false;
     for (std::size_t p = 0; p < patches.size(); ++p) failed[p].assign(cells[p].size(), false);
@@ -96,30 +207,15 @@ Expected<TriangleMesh> tessellate_patches(std::span<const SurfaceView> views, do
     }
     if (auto counted = tessellation::check_cell_count(cell_total, tolerance); !counted) return counted.error();
   }
-  return assembly.finish();
-}
-
-/// The largest absolute coordinate of the patches on a 9 x 9 parameter grid
-/// each: the scale of the relative limits (tolerance floor, edge matching).
-double scale_of_patches(std::span<const SurfaceView> patches) {
-  constexpr int kSamples = 9;
-  double scale = 0.0;
-  for (const SurfaceView& patch : patches) {
-    std::array<double, kSamples> us{}, vs{};
-    for (int k = 0; k < kSamples; ++k) {
-      us[k] = patch.domain_u().lerp(static_cast<double>(k) / (kSamples - 1));
-      vs[k] = patch.domain_v().lerp(static_cast<double>(k) / (kSamples - 1));
-    }
-    std::vector<double> grid(kSamples * kSamples * 3);
-    patch.grid_points_at(us, vs, grid);
-    for (const double x : grid) scale = std::max(scale, std::abs(x));
-  }
-  return scale;
+  if (auto whole = check_degenerate_patches(patches, assembly, match_distance); !whole) return whole.error();
+  TriangleMesh mesh = assembly.finish();
+  progress.finish();
+  return mesh;
 }
 
 }  // namespace
 
-Expected<TriangleMesh> tessellate(std::span<const SurfaceView> patches, Tolerance tolerance) {
+Expected<TriangleMesh> tessellate(std::span<const SurfaceView> patches, Tolerance tolerance, Progress progress) {
   if (patches.empty()) return Error{"no surface to tessellate"};
   for (std::size_t p = 0; p < patches.size(); ++p) {
     if (patches[p].dimension() != 3) {
@@ -141,7 +237,12 @@ Expected<TriangleMesh> tessellate(std::span<const SurfaceView> patches, Toleranc
   // Shared edges agree to rounding; at least a tiny absolute distance so that
   // surfaces at the origin (scale 0) still compare.
   const double match_distance = std::max(tolerances::kMeshSharedEdgeRelative * scale, tolerances::kScaleFloor);
-  return tessellate_patches(patches, e, match_distance);
+  std::vector<Patch> prepared;
+  for (const SurfaceView& view : patches) prepared.emplace_back(view);
+  const CellEstimate estimate(prepared);
+  if (auto fits = check_estimate(estimate, e); !fits) return fits.error();
+  TessellationProgress reporter(progress);
+  return tessellate_patches(prepared, estimate, e, match_distance, reporter);
 }
 
 }  // namespace casteljau

@@ -21,7 +21,7 @@ void MeshAssembly::add_normal(std::uint32_t vertex, const Point& normal) {
   normal_sums_[vertex] += to_vec3(normal);
 }
 
-void MeshAssembly::assemble() {
+void MeshAssembly::assemble(TessellationProgress& progress, double from, double to) {
   positions_.clear();
   normal_sums_.clear();
   triangles_.clear();
@@ -29,8 +29,13 @@ void MeshAssembly::assemble() {
   collect_corner_keys();
   create_corner_vertices();
   create_side_vertices();
+  std::size_t total = 0, done = 0;
+  for (const auto& cells : cells_) total += cells.size();
   for (std::size_t p = 0; p < patches_.size(); ++p) {
-    for (std::size_t c = 0; c < cells_[p].size(); ++c) triangulate(p, c);
+    for (std::size_t c = 0; c < cells_[p].size(); ++c) {
+      triangulate(p, c);
+      progress.report(from, to, static_cast<double>(++done) / static_cast<double>(total));
+    }
   }
 }
 

@@ -27,6 +27,7 @@
 
 #include "casteljau/ops/mesh.hpp"
 #include "tessellate_edges.hpp"
+#include "tessellate_progress.hpp"
 #include "tessellate_quadtree.hpp"
 
 namespace casteljau::tessellation {
@@ -63,8 +64,9 @@ class MeshAssembly {
       : patches_(patches), edges_(edges), cells_(cells) {}
 
   /// Steps 4 and 5 for the current cells: replaces the vertices and
-  /// triangles of the previous call.
-  void assemble();
+  /// triangles of the previous call. Reports the cells triangulated as the
+  /// part [from, to] of the whole work.
+  void assemble(TessellationProgress& progress, double from, double to);
   /// The triangles of the last assemble(), per patch in cell order.
   const std::vector<Triangle>& triangles() const { return triangles_; }
   /// The position of vertex `vertex`.

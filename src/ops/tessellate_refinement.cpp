@@ -107,8 +107,11 @@ bool cell_needs_split(const Patch& patch, const Cell& cell, double tolerance, bo
   return true;
 }
 
-Status refine(const Patch& patch, double tolerance, std::vector<Cell> pending, std::vector<Cell>& accepted,
-              std::size_t other_cells) {
+Status refine(const Patch& patch, double tolerance, std::vector<Cell>& accepted, std::size_t other_cells,
+              const RefinementProgress& progress) {
+  std::vector<Cell> pending = patch.roots();
+  const Key spans_v = patch.v_end / kSpan;
+  double done = 0.0;
   while (!pending.empty()) {
     const Cell cell = pending.back();
     pending.pop_back();
@@ -119,6 +122,11 @@ Status refine(const Patch& patch, double tolerance, std::vector<Cell> pending, s
       }
     } else {
       accepted.push_back(cell);
+      const auto root = static_cast<std::size_t>((cell.u0 / kSpan) * spans_v + cell.v0 / kSpan);
+      const double area =
+          static_cast<double>(cell.u1 - cell.u0) * kStep * (static_cast<double>(cell.v1 - cell.v0) * kStep);
+      done += progress.root_shares[root] * area;
+      progress.progress.report(progress.from, progress.to, done);
     }
   }
   return {};

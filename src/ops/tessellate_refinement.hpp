@@ -19,6 +19,7 @@
 
 #include "casteljau/core/expected.hpp"
 #include "tessellate_assembly.hpp"
+#include "tessellate_progress.hpp"
 #include "tessellate_quadtree.hpp"
 
 namespace casteljau::tessellation {
@@ -30,11 +31,21 @@ Status check_cell_count(std::size_t cells, double tolerance);
 /// The cell test; when the cell fails, true and the directions to halve it in.
 bool cell_needs_split(const Patch& patch, const Cell& cell, double tolerance, bool& in_u, bool& in_v);
 
-/// Refines the cells `pending` of `patch` until each passes the cell test,
+/// Where refine() reports its progress: the part [from, to] of the whole
+/// work, shared among the patch's roots (Patch::roots() order) in proportion
+/// to `root_shares` (summing to 1), and within a root by the parameter area
+/// accepted so far.
+struct RefinementProgress {
+  TessellationProgress& progress;
+  double from = 0.0, to = 0.0;
+  const std::vector<double>& root_shares;
+};
+
+/// Refines the root cells of `patch` until each cell passes the cell test,
 /// appending them to `accepted`; `other_cells` (the other patches' cells)
 /// counts towards the limit of check_cell_count.
-Status refine(const Patch& patch, double tolerance, std::vector<Cell> pending, std::vector<Cell>& accepted,
-              std::size_t other_cells);
+Status refine(const Patch& patch, double tolerance, std::vector<Cell>& accepted, std::size_t other_cells,
+              const RefinementProgress& progress);
 
 /// The triangle check of one triangle of `assembly` on its patch.
 bool triangle_within_tolerance(const Patch& patch, const Triangle& triangle, const MeshAssembly& assembly,

@@ -277,6 +277,33 @@ inline constexpr double kMeshSharedEdgeRelative = 1e-9;
 /// Vertices of one edge are never merged with each other.
 inline constexpr double kMeshSameEdgeParameter = 1e-12;
 
+/// Subcells (in all patches together) whose second differences estimate, before
+/// any refinement, how many cells a tessellation needs at least
+/// (src/ops/tessellate_estimate.hpp): each knot span gets m x m of them, m =
+/// max(1, floor(sqrt(4096 / spans))), and costs one grid batch of (2m + 1)^2
+/// points. 4096 subcells resolve the curvature of smooth surfaces far finer
+/// than the 10^6 and more cells at which the estimate can refuse a request,
+/// for about 2 x 10^4 surface points: milliseconds, a few per cent of the
+/// smallest tessellation. Unit: subcells.
+inline constexpr std::size_t kMeshEstimateSubcells = 4096;
+
+/// How far below the limit the up-front estimate of a tessellation must stay
+/// for the tolerance it suggests to fit (a refused request names the
+/// tolerance at which the estimate is kMaxMeshTriangles / 8). The estimate
+/// counts two triangles a cell where a fan has four, and the ideal cell size
+/// where the quadtree's halving gives cells down to half that size each way,
+/// so the real count is 2 to 8 times the estimate: measured 3.3 to 7.9 on a
+/// sphere, two tori, a bicubic patch, a paraboloid and a bicubic B-spline
+/// with a bump, from 0.01 to 3e-5 (tests/ops/tessellate_estimate_test.cpp
+/// records the ratios).
+/// Dimensionless.
+inline constexpr double kMeshEstimateMargin = 8.0;
+
+/// Most progress reports of one tessellation (ops/tessellate.hpp): a report
+/// whenever the fraction done has grown by 1/200, a half per cent, which a
+/// terminal line shows as smooth progress at a negligible cost. Unit: calls.
+inline constexpr int kMeshProgressReports = 200;
+
 // --- Surface figures (helper D: render/surface_plots.hpp) --------------------
 
 /// Distance tolerance of the shaded image of `plot` and the gallery, relative
