@@ -23,7 +23,7 @@ struct BernsteinOptions {
 int run_bernstein(const BernsteinOptions& options) {
   const auto format = figure_output_format(options.output);
   if (!format) return fail(format.error());
-  const auto n = whole_number("N", options.degree, 1, render::kMaxPlottedBasisDegree);
+  const auto n = whole_number("N", options.degree, 1, tolerances::kMaxPlottedBasisDegree);
   if (!n) return fail(n.error());
   auto figure = render::bernstein_basis_figure(static_cast<int>(*n), options.without_ends);
   if (!figure) return fail(figure.error());
@@ -39,7 +39,7 @@ void add_bernstein_command(CLI::App& app, int& status) {
       "bernstein",
       fmt::format("Plots the Bernstein basis B_(N,k)(t) = C(N,k) t^k (1-t)^(N-k), k = 0..N, on [0,1] into an SVG, PNG "
                   "or PDF figure (by the extension of -o). 1 <= N <= {}.",
-                  render::kMaxPlottedBasisDegree));
+                  tolerances::kMaxPlottedBasisDegree));
   bernstein->add_option("N", options->degree, "The degree")->required();
   CLI::Option* output =
       bernstein->add_option("-o,--output", options->output, kFigureOutputHelp)->type_name("FILE")->required();

@@ -4,7 +4,8 @@
 // output's extension. Several surfaces in one file ({"models": [...]}) give
 // one mesh, welded where they share edges. The command only translates:
 // every check runs before anything is written; the mesh is built in memory and
-// written atomically; one summary line goes to standard output.
+// written atomically; one summary line goes to standard output. A long
+// tessellation shows its progress on a terminal's standard error (progress.hpp).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -24,6 +25,7 @@
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/tessellate.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 
 namespace casteljau::cli {
 namespace {
@@ -83,7 +85,11 @@ int run_tessellate(const TessellateOptions& options) {
     }
     views.push_back(view);
   }
-  auto mesh = tessellate(views, Tolerance{*tolerance});
+  // The progress line is erased (the reporter destroyed) before any message.
+  auto mesh = [&] {
+    TerminalProgress progress("tessellate");
+    return tessellate(views, Tolerance{*tolerance}, progress.callback());
+  }();
   if (!mesh) return fail(fmt::format("{}: {}", display_name(options.model), mesh.error().message));
   std::string bytes;
   switch (*format) {

@@ -237,8 +237,8 @@ void bind_ops(py::module_& module) {
       .def_readonly("degenerate_triangles", &MeshTopology::degenerate_triangles,
                     "Triangles with two equal vertex indices or zero area.")
       .def_property_readonly("watertight", &MeshTopology::watertight,
-                             "True when closed and edge-manifold: every edge has exactly two triangles, used in "
-                             "opposite directions, and no triangle is degenerate.")
+                             "True when closed and edge-manifold: there are triangles, every edge has exactly two, "
+                             "used in opposite directions, and no triangle is degenerate.")
       .def("__eq__",
            [](const MeshTopology& a, const MeshTopology& b) {
              return a.boundary_edges == b.boundary_edges && a.non_manifold_edges == b.non_manifold_edges &&

@@ -3,7 +3,8 @@
 // undirected pair (smaller index first) puts the uses of one edge side by
 // side, and each run tells boundary (1 use), manifold (2 uses, opposite
 // directions), inconsistently oriented (2 uses, same direction) or
-// non-manifold (3 or more).
+// non-manifold (3 or more). has_zero_area is the rounding test of a
+// triangle's area that it and the tessellator share.
 #include "casteljau/ops/mesh.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/core/vec.hpp"
 
 namespace casteljau {
 namespace {
@@ -24,24 +26,16 @@ struct EdgeUse {
   bool forward = false;
 };
 
-/// True when the triangle's vertices are (to rounding) on one line: the
-/// cross product of two edges is at most a few ulps (tolerances::kRoundingSlack)
-/// of the product of their lengths, i.e. the sine of the angle between them.
-bool has_zero_area(const PointArray& vertices, const std::array<std::uint32_t, 3>& triangle) {
-  const auto a = vertices[triangle[0]], b = vertices[triangle[1]], c = vertices[triangle[2]];
-  const double e[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double f[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const double cross[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
-  const double area = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
-  const double lengths = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) *
-                         std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-  return area <= tolerances::kRoundingSlack * lengths;
-}
-
 }  // namespace
+
+bool has_zero_area(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e = b - a, f = c - a;
+  return norm(cross(e, f)) <= tolerances::kRoundingSlack * norm(e) * norm(f);
+}
 
 MeshTopology mesh_topology(const TriangleMesh& mesh) {
   MeshTopology topology;
+  topology.triangles = mesh.triangles.size();
   std::vector<EdgeUse> uses;
   uses.reserve(mesh.triangles.size() * 3);
   for (const auto& triangle : mesh.triangles) {
@@ -50,7 +44,10 @@ MeshTopology mesh_topology(const TriangleMesh& mesh) {
       ++topology.degenerate_triangles;
       continue;
     }
-    if (has_zero_area(mesh.vertices, triangle)) ++topology.degenerate_triangles;
+    const PointArray& x = mesh.vertices;
+    if (has_zero_area(x.vec<3>(triangle[0]), x.vec<3>(triangle[1]), x.vec<3>(triangle[2]))) {
+      ++topology.degenerate_triangles;
+    }
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t from = triangle[k], to = triangle[(k + 1) % 3];
       uses.push_back(EdgeUse{std::min(from, to), std::max(from, to), from < to});

@@ -204,8 +204,8 @@ Expected<Panel> bspline_basis_panel(std::span<const double> knots, int degree) {
     return Error{fmt::format("a B-spline basis of degree {} needs at least {} knots, got {}", degree, 2 * degree + 2,
                              knots.size())};
   const std::size_t count = knots.size() - static_cast<std::size_t>(degree) - 1;
-  if (count > static_cast<std::size_t>(kMaxPlottedBasisDegree) + 1)
-    return Error{fmt::format("{} basis functions are too many to plot (at most {})", count, kMaxPlottedBasisDegree + 1)};
+  if (count > static_cast<std::size_t>(tolerances::kMaxPlottedBasisDegree) + 1)
+    return Error{fmt::format("{} basis functions are too many to plot (at most {})", count, tolerances::kMaxPlottedBasisDegree + 1)};
   if (auto ok = validate_knots(knots, degree, count); !ok) return ok.error();
   Panel panel;
   panel.x.label = "u";

@@ -5,7 +5,7 @@
 // gallery_bspline.cpp and come last.
 #include "figure_list.hpp"
 #include "markup.hpp"
-#include "progress_part.hpp"
+#include "casteljau/core/progress.hpp"
 #include "casteljau/render/gallery.hpp"
 
 #include <fmt/format.h>
@@ -531,7 +531,7 @@ Expected<std::vector<GalleryFigure>> write_gallery(const std::filesystem::path& 
   auto bound = [&](std::size_t k) { return kBuildingShare + (1.0 - kBuildingShare) * static_cast<double>(k) / parts; };
   for (std::size_t i = 0; i < figures->size(); ++i) {
     const auto& f = (*figures)[i];
-    detail::ProgressPart svg(progress, bound(2 * i), bound(2 * i + 1)), png(progress, bound(2 * i + 1), bound(2 * i + 2));
+    ProgressPart svg(progress, bound(2 * i), bound(2 * i + 1)), png(progress, bound(2 * i + 1), bound(2 * i + 2));
     if (auto ok = write_svg(f.figure, dir / (f.name + ".svg"), svg.callback()); !ok)
       return with_context(ok.error(), f.name);
     if (auto ok = write_png(f.figure, dir / (f.name + ".png"), png.callback()); !ok)

@@ -25,7 +25,7 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/render/bernstein_graph.hpp"
-#include "progress_part.hpp"
+#include "casteljau/core/progress.hpp"
 
 namespace casteljau::render {
 namespace {
@@ -202,7 +202,7 @@ struct PanelLines {
   std::vector<std::vector<Vec2>> graphs;  ///< one per BernsteinGraphItem
 };
 
-using detail::ProgressPart;
+using casteljau::ProgressPart;
 
 /// Every curve and graph of the panel flattened within `tolerance` (model
 /// units); on a logarithmic axis within each one's own fallback instead.
@@ -741,17 +741,17 @@ Vec2 PanelFrame::from_pixels(Vec2 pixel) const {
 }
 
 Status check_plotted_degree(int degree) {
-  if (degree <= kMaxPlottedCurveDegree) return {};
+  if (degree <= tolerances::kMaxPlottedCurveDegree) return {};
   return Error{fmt::format("a curve of degree {} is beyond what a figure draws (degree <= {}: certifying its drawing "
                            "costs O(n^2) per segment, minutes at this degree); eval --samples gives its points",
-                           degree, kMaxPlottedCurveDegree)};
+                           degree, tolerances::kMaxPlottedCurveDegree)};
 }
 
 Tolerance drawing_tolerance(const PanelFrame& frame, double fallback) {
   if (frame.x_logarithmic || frame.y_logarithmic) return Tolerance{fallback};
   const double ux = (frame.x_upper - frame.x_lower) / frame.area.width;
   const double uy = (frame.y_upper - frame.y_lower) / frame.area.height;
-  return Tolerance{kCurveTolerancePixels * std::min(ux, uy)};
+  return Tolerance{tolerances::kCurveTolerancePixels * std::min(ux, uy)};
 }
 
 Ticks linear_ticks(double lower, double upper, int max_count) {

@@ -136,9 +136,9 @@ BezierCurve bernstein_graph(int n, int k) {
 
 Expected<Panel> bernstein_basis_panel(int n, bool without_ends) {
   if (n < 1) return Error{fmt::format("the degree of the Bernstein basis must be >= 1, got {}", n)};
-  if (n > kMaxPlottedBasisDegree)
+  if (n > tolerances::kMaxPlottedBasisDegree)
     return Error{fmt::format("the degree of the Bernstein basis must be <= {} to be plotted, got {}",
-                             kMaxPlottedBasisDegree, n)};
+                             tolerances::kMaxPlottedBasisDegree, n)};
   if (without_ends && n < 2)
     return Error{fmt::format("without k = 0 and k = n nothing is left of the basis of degree {}", n)};
   Panel panel;
@@ -180,12 +180,12 @@ struct PlaneBox {
   void add(const PlaneBox& other) {
     for (int j = 0; j < 2; ++j) lower[j] = std::min(lower[j], other.lower[j]), upper[j] = std::max(upper[j], other.upper[j]);
   }
-  /// The first axis wider than kMaxPlottedWidth (or the diagonal, axis 2), or -1.
+  /// The first axis wider than tolerances::kMaxPlottedWidth (or the diagonal, axis 2), or -1.
   int overflowing_axis() const {
     for (int j = 0; j < 2; ++j)
-      if (lower[j] <= upper[j] && !(upper[j] - lower[j] <= kMaxPlottedWidth)) return j;
+      if (lower[j] <= upper[j] && !(upper[j] - lower[j] <= tolerances::kMaxPlottedWidth)) return j;
     const bool empty = !(lower[0] <= upper[0]);
-    return !empty && !(std::hypot(upper[0] - lower[0], upper[1] - lower[1]) <= kMaxPlottedWidth) ? 2 : -1;
+    return !empty && !(std::hypot(upper[0] - lower[0], upper[1] - lower[1]) <= tolerances::kMaxPlottedWidth) ? 2 : -1;
   }
 };
 
@@ -208,9 +208,9 @@ Status check_plottable(const PlaneBox& box, const std::string& subject) {
   if (axis == 2)
     return Error{fmt::format("{} x from {:g} to {:g} and y from {:g} to {:g}, too wide to plot (a figure shows a "
                              "diagonal of at most {:.2g})",
-                             subject, box.lower[0], box.upper[0], box.lower[1], box.upper[1], kMaxPlottedWidth)};
+                             subject, box.lower[0], box.upper[0], box.lower[1], box.upper[1], tolerances::kMaxPlottedWidth)};
   return Error{fmt::format("{} {} from {:g} to {:g}, too wide to plot (a figure shows a width of at most {:.2g})",
-                           subject, axis == 0 ? "x" : "y", box.lower[axis], box.upper[axis], kMaxPlottedWidth)};
+                           subject, axis == 0 ? "x" : "y", box.lower[axis], box.upper[axis], tolerances::kMaxPlottedWidth)};
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/transform.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/core/vec.hpp"
 #include "../core/number_text.hpp"
 #include "construction_support.hpp"
 #include "surface_rows.hpp"
@@ -54,12 +55,6 @@ void combine(std::array<double, 2> fu, std::array<double, 2> fv, std::span<const
 Point curve_derivative(const BSplineCurve& curve, double t, int order) {
   return order == 0 ? point_at(curve, t) : derivative_at(curve, t, order);
 }
-
-Point cross(const Point& a, const Point& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-double norm(const Point& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 
 double patch_scale(const CoonsPatch& patch) {
   double scale = tolerances::kScaleFloor;
@@ -168,22 +163,22 @@ Point partial_derivative_at(const CoonsPatch& patch, double u, double v, int ord
 
 Point normal_at(const CoonsPatch& patch, double u, double v) {
   assert(patch.dimension() == 3);
-  const Point su = partial_derivative_at(patch, u, v, 1, 0);
-  const Point sv = partial_derivative_at(patch, u, v, 0, 1);
-  Point n = cross(su, sv);
+  const Vec3 su = Vec3::from(partial_derivative_at(patch, u, v, 1, 0));
+  const Vec3 sv = Vec3::from(partial_derivative_at(patch, u, v, 0, 1));
+  Vec3 n = cross(su, sv);
   // A derivative below this is a collapsed edge (a boundary that is one
   // point); compare with the patch's scale, never an absolute epsilon.
   const double vanishing = tolerances::kVanishingDerivative * patch_scale(patch);
   if (norm(n) <= vanishing * vanishing) {
     // Near an edge where S_v = 0 (u = 0 or 1 collapsed), S_v ~ (u - u_edge) S_uv,
     // so the normal from inside is along +-(S_u x S_uv); likewise for S_u.
-    const Point suv = partial_derivative_at(patch, u, v, 1, 1);
+    const Vec3 suv = Vec3::from(partial_derivative_at(patch, u, v, 1, 1));
     if (norm(sv) <= vanishing && norm(su) > vanishing) {
       n = cross(su, suv);
-      if (u > 0.5) n = {-n[0], -n[1], -n[2]};
+      if (u > 0.5) n = -n;
     } else if (norm(su) <= vanishing && norm(sv) > vanishing) {
       n = cross(suv, sv);
-      if (v > 0.5) n = {-n[0], -n[1], -n[2]};
+      if (v > 0.5) n = -n;
     }
   }
   const double length = norm(n);

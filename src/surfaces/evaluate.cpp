@@ -9,6 +9,7 @@
 
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/core/vec.hpp"
 #include "../bezier/de_casteljau.hpp"
 #include "../core/workspace.hpp"
 #include "surface_basis.hpp"
@@ -191,12 +192,6 @@ std::vector<std::vector<Point>> derivative_table(const BSplineSurface& surface, 
   return s;
 }
 
-Point cross(const Point& a, const Point& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-double norm(const Point& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-
 // --- grid kernels ------------------------------------------------------------------
 
 /// Basis table of one direction: first control index and the p+1 values of
@@ -348,9 +343,9 @@ std::vector<std::vector<Point>> partial_derivatives_at(const BSplineSurface& sur
 Point normal_at(const BSplineSurface& surface, double u, double v) {
   assert(surface.dimension() == 3);
   const auto table = derivative_table(surface, u, v, 1, 1, 2);
-  const Point& su = table[1][0];
-  const Point& sv = table[0][1];
-  const Point& suv = table[1][1];
+  const Vec3 su = Vec3::from(table[1][0]);
+  const Vec3 sv = Vec3::from(table[0][1]);
+  const Vec3 suv = Vec3::from(table[1][1]);
   // A first derivative vanishes when its change across the whole domain is
   // negligible against the control points' size (the curves' criterion).
   const Interval du = surface.domain_u(), dv = surface.domain_v();
@@ -358,25 +353,25 @@ Point normal_at(const BSplineSurface& surface, double u, double v) {
   const double floor = tolerances::kVanishingDerivative * (scale > 0.0 ? scale : 1.0);
   const bool u_vanishes = norm(su) * du.length() <= floor;
   const bool v_vanishes = norm(sv) * dv.length() <= floor;
-  Point n(3, 0.0);
+  Vec3 n{};
   if (!u_vanishes && !v_vanishes) {
     n = cross(su, sv);
   } else if (v_vanishes && !u_vanishes) {
     // S_v(u + h, v) = S_v(u, v) + h S_uv + O(h^2): from inside the domain the
     // normal tends to +-(S_u x S_uv), the sign of h (negative at the upper end).
     n = cross(su, suv);
-    if (u >= du.upper) n = {-n[0], -n[1], -n[2]};
+    if (u >= du.upper) n = -n;
   } else if (u_vanishes && !v_vanishes) {
     n = cross(suv, sv);
-    if (v >= dv.upper) n = {-n[0], -n[1], -n[2]};
+    if (v >= dv.upper) n = -n;
   } else {
-    return n;
+    return Point(3, 0.0);
   }
   const double length = norm(n);
   const double reference = (norm(su) + norm(suv)) * (norm(sv) + norm(suv));
   if (!(length > tolerances::kVanishingDerivative * reference)) return Point(3, 0.0);
-  for (double& c : n) c /= length;
-  return n;
+  for (double& c : n.coordinates) c /= length;
+  return Point(n.coordinates.begin(), n.coordinates.end());
 }
 
 Point normal_at(const BezierSurface& surface, double u, double v) {

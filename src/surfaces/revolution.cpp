@@ -1,7 +1,6 @@
 // Surfaces of revolution (The NURBS Book A8.1), the sphere and the torus.
 #include "casteljau/surfaces/revolution.hpp"
 
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
@@ -9,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "casteljau/core/vec.hpp"
 #include "casteljau/nurbs/conics.hpp"
 #include "../core/number_text.hpp"
 
@@ -16,7 +16,6 @@ namespace casteljau {
 namespace {
 
 using detail::number_text;
-using Triple = std::array<double, 3>;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;  // exact: pi scaled by 2
@@ -38,31 +37,26 @@ std::pair<double, double> cos_sin(double angle) {
   return {std::cos(angle), std::sin(angle)};
 }
 
-double dot(const Triple& a, const Triple& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Triple cross(const Triple& a, const Triple& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
 /// Three finite coordinates, named in the error.
-Expected<Triple> checked_point(std::span<const double> point, const char* what) {
+Expected<Vec3> checked_point(std::span<const double> point, const char* what) {
   if (point.size() != 3) {
     return Error{std::string("the ") + what + " has " + std::to_string(point.size()) + " coordinates, it needs 3"};
   }
   for (std::size_t c = 0; c < 3; ++c) {
     if (auto ok = check_finite(point[c], "coordinate " + std::to_string(c) + " of the " + what); !ok) return ok.error();
   }
-  return Triple{point[0], point[1], point[2]};
+  return Vec3{{point[0], point[1], point[2]}};
 }
 
 /// The unit axis direction, or an error for a zero one.
-Expected<Triple> checked_direction(std::span<const double> direction, const char* what) {
+Expected<Vec3> checked_direction(std::span<const double> direction, const char* what) {
   auto d = checked_point(direction, what);
   if (!d) return d.error();
-  const double length = std::sqrt(dot(*d, *d));
+  const double length = norm(*d);
   if (!(length > 0.0) || !std::isfinite(length)) {
     return Error{std::string("the ") + what + " is the zero vector (or too large to normalize), it must give a direction"};
   }
-  return Triple{(*d)[0] / length, (*d)[1] / length, (*d)[2] / length};
+  return Vec3{{(*d)[0] / length, (*d)[1] / length, (*d)[2] / length}};
 }
 
 Status check_radius(double radius, const char* what) {
@@ -73,15 +67,15 @@ Status check_radius(double radius, const char* what) {
 
 /// A unit vector orthogonal to the unit vector t: t crossed with the
 /// coordinate axis it is least aligned with, normalized.
-Triple orthogonal_unit(const Triple& t) {
+Vec3 orthogonal_unit(const Vec3& t) {
   std::size_t k = 0;
   for (std::size_t c = 1; c < 3; ++c)
     if (std::abs(t[c]) < std::abs(t[k])) k = c;
-  Triple e{0, 0, 0};
+  Vec3 e{};
   e[k] = 1.0;
-  const Triple x = cross(t, e);
-  const double length = std::sqrt(dot(x, x));
-  return {x[0] / length, x[1] / length, x[2] / length};
+  const Vec3 x = cross(t, e);
+  const double length = norm(x);
+  return Vec3{{x[0] / length, x[1] / length, x[2] / length}};
 }
 
 }  // namespace
@@ -104,38 +98,38 @@ Expected<BSplineSurface> revolve(const BSplineCurve& profile, std::span<const do
   const int arcs = angle <= kPi / 2 ? 1 : angle <= kPi ? 2 : angle <= 3 * kPi / 2 ? 3 : 4;
   const double sweep = angle / arcs;
   const double mid_weight = cos_sin(sweep / 2).first;
-  const Triple& s = *origin;
-  const Triple& t = *axis;
+  const Vec3& s = *origin;
+  const Vec3& t = *axis;
 
   const std::size_t rows = static_cast<std::size_t>(2 * arcs + 1);
   const std::size_t columns = profile.control_points().size();
   std::vector<double> coordinates(rows * columns * 3);
   std::vector<double> weights(rows * columns);
-  auto put = [&](std::size_t i, std::size_t j, const Triple& point, double weight) {
+  auto put = [&](std::size_t i, std::size_t j, const Vec3& point, double weight) {
     for (std::size_t c = 0; c < 3; ++c) coordinates[(i * columns + j) * 3 + c] = point[c];
     weights[i * columns + j] = weight;
   };
   for (std::size_t j = 0; j < columns; ++j) {
     const auto p = profile.control_points()[j];
-    const Triple point{p[0], p[1], p[2]};
+    const Vec3 point{{p[0], p[1], p[2]}};
     const double w = profile.is_rational() ? profile.weights()[j] : 1.0;
     // O: the foot of P on the axis; X, Y: the plane of P's circle.
-    const Triple offset{point[0] - s[0], point[1] - s[1], point[2] - s[2]};
+    const Vec3 offset = point - s;
     const double along = dot(offset, t);
-    const Triple foot{s[0] + along * t[0], s[1] + along * t[1], s[2] + along * t[2]};
-    Triple x{point[0] - foot[0], point[1] - foot[1], point[2] - foot[2]};
-    const double r = std::sqrt(dot(x, x));
+    const Vec3 foot{{s[0] + along * t[0], s[1] + along * t[1], s[2] + along * t[2]}};
+    Vec3 x = point - foot;
+    const double r = norm(x);
     put(0, j, point, w);
     if (r == 0.0) {  // on the axis: the point does not move
       for (std::size_t i = 1; i < rows; ++i) put(i, j, point, (i % 2 == 1) ? w * mid_weight : w);
       continue;
     }
-    x = {x[0] / r, x[1] / r, x[2] / r};
-    const Triple y = cross(t, x);
+    x = Vec3{{x[0] / r, x[1] / r, x[2] / r}};
+    const Vec3 y = cross(t, x);
     auto on_circle = [&](double theta, double radius) {
       const auto [c, sn] = cos_sin(theta);
-      return Triple{foot[0] + radius * (c * x[0] + sn * y[0]), foot[1] + radius * (c * x[1] + sn * y[1]),
-                  foot[2] + radius * (c * x[2] + sn * y[2])};
+      return Vec3{{foot[0] + radius * (c * x[0] + sn * y[0]), foot[1] + radius * (c * x[1] + sn * y[1]),
+                     foot[2] + radius * (c * x[2] + sn * y[2])}};
     };
     for (int a = 0; a < arcs; ++a) {
       const double start = a * sweep;
@@ -182,13 +176,13 @@ Expected<BSplineSurface> make_torus(std::span<const double> center, std::span<co
     return Error{"the minor radius " + number_text(minor_radius) + " is not smaller than the major radius " +
                  number_text(major_radius) + ": that torus touches or crosses itself on its axis (only ring tori are made)"};
   }
-  const Triple e = orthogonal_unit(*t);
+  const Vec3 e = orthogonal_unit(*t);
   const ConicFrame frame{{(*c)[0] + major_radius * e[0], (*c)[1] + major_radius * e[1], (*c)[2] + major_radius * e[2]},
                          {e[0], e[1], e[2]},
                          {(*t)[0], (*t)[1], (*t)[2]}};
   auto circle = make_circle(frame, minor_radius);
   if (!circle) return circle.error();
-  return revolve(*circle, center, std::span<const double>(t->data(), 3), kTwoPi);
+  return revolve(*circle, center, t->coordinates, kTwoPi);
 }
 
 }  // namespace casteljau

@@ -3,7 +3,9 @@
 # poles) gives a watertight mesh in each of OBJ, STL and PLY (format by the
 # extension, any case); the summary line; two bilinear patches sharing an edge
 # in opposite directions weld into one mesh; a tighter tolerance gives more
-# triangles; bad input (exit 2, one line on stderr, nothing written).
+# triangles; a patch with a pole; bad input (exit 2, one line on stderr,
+# nothing written): among it a tolerance whose triangles cannot fit, refused
+# at once, and surfaces without area.
 # Usage: bash tessellate.sh CASTELJAU EXAMPLES_DIR
 source "$(dirname "$0")/support/common.sh" "$@"
 
@@ -61,6 +63,36 @@ expect_error "extension" "does not end in .obj, .stl or .ply" tessellate "$work/
 expect_error "missing file" "cannot open" tessellate "$work/none.json" --tolerance 0.1 -o "$work/x.obj"
 expect_error "no output" "output" tessellate "$work/sphere.json" --tolerance 0.1
 expect_error "missing folder" "cannot write" tessellate "$work/sphere.json" --tolerance 0.1 -o "$work/no/x.obj"
-[[ ! -e "$work/x.obj" && ! -e "$work/x.txt" ]] || fail_test "a mesh was written for bad input"
+
+# Issue 15: --tolerance 1e-9 worked 14.6 s before refusing for 10^7 triangles;
+# the estimate refuses before any refinement and suggests a tolerance (with
+# progress forced on, the one error line is still all of stderr).
+CASTELJAU_PROGRESS=always expect_error "estimated count" \
+  "triangles at tolerance 1e-09 (estimated from the surfaces' second differences), more than the limit of 10000000; a tolerance of " \
+  tessellate "$work/sphere.json" --tolerance 1e-9 -o "$work/x.stl"
+grep -Eq '^casteljau: error: .*/sphere.json: the tessellation needs at least [0-9]+ triangles .* of [0-9.e+-]+ or larger should fit$' \
+  "$work/stderr" || fail_test "estimated count: $(cat "$work/stderr")"
+
+# Issue 15: all control points equal gave "0 triangles, 1 vertices, watertight".
+# A surface without area (a point, or a curve: the ruled surface between a curve
+# and itself) is refused by name; one edge collapsed (a pole) is a surface.
+model point.json '{"type": "bezier_surface", "control_points": [[[1,2,3],[1,2,3]],[[1,2,3],[1,2,3]]]}'
+expect_error "a point" "point.json: patch 0 is degenerate: every point of it is (1, 2, 3), and a point has no triangles" \
+  tessellate "$work/point.json" --tolerance 0.01 -o "$work/x.stl"
+model ruled.json '{"type": "bspline_surface", "degree": [2, 1], "knots": [[0,0,0,1,1,1],[0,0,1,1]],
+  "control_points": [[[0,0,0],[0,0,0]],[[1,1,0],[1,1,0]],[[2,0,0],[2,0,0]]]}'
+expect_error "a curve" "ruled.json: patch 0 is degenerate: it has zero area (its points lie on one curve)" \
+  tessellate "$work/ruled.json" --tolerance 0.01 -o "$work/x.stl"
+model second.json '{"models": [
+  {"type": "bezier_surface", "control_points": [[[0,0,0],[0,1,0]],[[1,0,0],[1,1,0]]]},
+  {"type": "bezier_surface", "control_points": [[[5,5,5],[5,5,5]],[[5,5,5],[5,5,5]]]}]}'
+expect_error "one of two" "second.json: patch 1 is degenerate: every point of it is (5, 5, 5)" \
+  tessellate "$work/second.json" --tolerance 0.01 -o "$work/x.stl"
+model cone.json '{"type": "bezier_surface", "control_points": [[[0,0,1],[0,0,1]],[[1,0,0],[0,1,0]]]}'
+"$casteljau" tessellate "$work/cone.json" --tolerance 0.01 -o "$work/cone.stl" >"$work/out" 2>"$work/err" ||
+  fail_test "pole: exit $?: $(cat "$work/err")"
+grep -Eq '^tessellate: [1-9][0-9]* triangles, .* not watertight \([0-9]+ boundary edges, 0 non-manifold edges, 0 inconsistently oriented edges, 0 degenerate triangles\)$' "$work/out" ||
+  fail_test "pole: summary $(cat "$work/out")"
+[[ ! -e "$work/x.obj" && ! -e "$work/x.txt" && ! -e "$work/x.stl" ]] || fail_test "a mesh was written for bad input"
 
 finish tessellate

@@ -77,10 +77,13 @@ TEST(MeshTopology, RepeatedIndexAndCollinearTrianglesAreDegenerate) {
   EXPECT_FALSE(topology.watertight());
 }
 
-TEST(MeshTopology, EmptyMeshHasNoEdges) {
+// Issue 15: a 0-triangle mesh (of a surface that is one point) was called
+// watertight. It has no open edge, but it encloses nothing either.
+TEST(MeshTopology, EmptyMeshHasNoEdgesAndIsNotWatertight) {
   const MeshTopology topology = mesh_topology(TriangleMesh{});
+  EXPECT_EQ(topology.triangles, 0u);
   EXPECT_EQ(topology.boundary_edges, 0u);
-  EXPECT_TRUE(topology.watertight());
+  EXPECT_FALSE(topology.watertight());
 }
 
 }  // namespace

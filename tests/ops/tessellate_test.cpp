@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+#include "casteljau/core/progress.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/tessellate.hpp"
 #include "casteljau/surfaces/bezier_surface.hpp"
@@ -32,6 +34,7 @@
 #include "casteljau/surfaces/coons.hpp"
 #include "casteljau/surfaces/evaluate.hpp"
 #include "casteljau/surfaces/revolution.hpp"
+#include "casteljau/surfaces/ruled.hpp"
 #include "casteljau/surfaces/surface_view.hpp"
 
 namespace casteljau {
@@ -436,6 +439,86 @@ TEST(Tessellate, RefusesBadRequests) {
   auto mesh = tessellate(two, Tolerance{0.1});
   ASSERT_FALSE(mesh.has_value());
   EXPECT_EQ(mesh.error().message, "patch 1 is in R^2, tessellation needs 3D surfaces");
+}
+
+/// Every fraction a Progress hears.
+struct Heard {
+  std::vector<double> fractions;
+  Progress progress() {
+    return Progress{[](void* self, double fraction) { static_cast<Heard*>(self)->fractions.push_back(fraction); },
+                    this};
+  }
+};
+
+// Issue 15: --tolerance 1e-9 on the sphere worked 14.6 s before refusing for
+// 10^7 triangles. The estimate refuses before any refinement (the progress
+// callback never hears), says what it estimated and suggests a tolerance; at
+// that tolerance the estimate leaves the margin of kMeshEstimateMargin.
+TEST(Tessellate, RefusesAnImpossibleToleranceBeforeAnyRefinement) {
+  const BSplineSurface surface = sphere({0, 0, 0}, 1.0);
+  const SurfaceView view[] = {surface};
+  Heard heard;
+  auto mesh = tessellate(view, Tolerance{1e-9}, heard.progress());
+  ASSERT_FALSE(mesh.has_value());
+  const std::string& message = mesh.error().message;
+  EXPECT_EQ(message.rfind("the tessellation needs at least ", 0), 0u) << message;
+  EXPECT_NE(message.find(" triangles at tolerance 1e-09 (estimated from the surfaces' second differences), more "
+                         "than the limit of 10000000; a tolerance of "),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find(" or larger should fit"), std::string::npos) << message;
+  EXPECT_TRUE(heard.fractions.empty());
+}
+
+// Issue 15: a surface whose control points are all equal gave a 0-triangle
+// mesh called watertight. A surface without area (a point, or a curve such as
+// the ruled surface between a curve and itself) is refused, named; one edge
+// collapsed to a point (a pole) is a surface like any other.
+TEST(Tessellate, RefusesPatchesWithoutArea) {
+  const auto message = [](std::span<const SurfaceView> views) {
+    auto mesh = tessellate(views, Tolerance{0.01});
+    return mesh ? "a mesh of " + std::to_string(mesh->triangles.size()) + " triangles" : mesh.error().message;
+  };
+  const BezierSurface point =
+      BezierSurface::from_trusted(ControlNet::from_trusted(2, 2, PointArray::from_trusted(3, {1, 2, 3, 1, 2, 3, 1, 2, 3, 1, 2, 3})));
+  const SurfaceView one[] = {point};
+  EXPECT_EQ(message(one), "patch 0 is degenerate: every point of it is (1, 2, 3), and a point has no triangles");
+  const BezierSurface square =
+      BezierSurface::from_trusted(ControlNet::from_trusted(2, 2, PointArray::from_trusted(3, {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0})));
+  const SurfaceView second[] = {square, point};
+  EXPECT_EQ(message(second), "patch 1 is degenerate: every point of it is (1, 2, 3), and a point has no triangles");
+  const BSplineCurve arc = cubic({{{0, 0, 0}, {1, 2, 0}, {2, -1, 1}, {3, 0, 0}}});
+  const BSplineSurface ruled = ruled_surface(arc, arc).value();
+  const SurfaceView curve[] = {ruled};
+  EXPECT_EQ(message(curve), "patch 0 is degenerate: it has zero area (its points lie on one curve), so it has no triangles");
+  const BSplineCurve dot = cubic({{{4, 4, 4}, {4, 4, 4}, {4, 4, 4}, {4, 4, 4}}});
+  const CoonsPatch coons = CoonsPatch::make(dot, dot, dot, dot, CoonsBlending::linear).value();
+  const SurfaceView collapsed[] = {coons};
+  EXPECT_EQ(message(collapsed), "patch 0 is degenerate: every point of it is (4, 4, 4), and a point has no triangles");
+  // A triangle-like patch: the edge u = 0 is the point (0, 0, 1).
+  const BezierSurface cone =
+      BezierSurface::from_trusted(ControlNet::from_trusted(2, 2, PointArray::from_trusted(3, {0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1, 0})));
+  const SurfaceView pole[] = {cone};
+  auto mesh = tessellate(pole, Tolerance{0.01});
+  ASSERT_TRUE(mesh.has_value()) << mesh.error().message;
+  EXPECT_GT(mesh->triangles.size(), 0u);
+  EXPECT_EQ(mesh_topology(*mesh).degenerate_triangles, 0u);
+}
+
+// Issue 15: long tessellations show progress. The library reports
+// non-decreasing fractions in [0, 1], ending at 1, at most
+// kMeshProgressReports + 1 times, and often enough to move a progress line.
+TEST(Tessellate, ReportsProgressUpToOne) {
+  const BSplineSurface surface = sphere({0, 0, 0}, 1.0);
+  const SurfaceView view[] = {surface};
+  Heard heard;
+  ASSERT_TRUE(tessellate(view, Tolerance{1e-3}, heard.progress()).has_value());
+  ASSERT_FALSE(heard.fractions.empty());
+  EXPECT_EQ(heard.fractions.back(), 1.0);
+  EXPECT_GE(heard.fractions.front(), 0.0);
+  for (std::size_t i = 1; i < heard.fractions.size(); ++i) EXPECT_LE(heard.fractions[i - 1], heard.fractions[i]);
+  EXPECT_LE(heard.fractions.size(), static_cast<std::size_t>(tolerances::kMeshProgressReports) + 1);
+  EXPECT_GE(heard.fractions.size(), 50u);
 }
 
 }  // namespace

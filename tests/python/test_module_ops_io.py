@@ -167,7 +167,7 @@ def test_triangle_mesh_class_and_topology():
     degenerate = c.TriangleMesh(mesh.vertices, mesh.normals, [[0, 0, 1]])
     assert c.mesh_topology(degenerate).degenerate_triangles == 1
     empty = c.TriangleMesh(np.zeros((0, 3)), np.zeros((0, 3)), np.zeros((0, 3), dtype=int))
-    assert c.mesh_topology(empty).watertight
+    assert not c.mesh_topology(empty).watertight  # no triangles: encloses nothing (issue 15)
 
 
 def test_triangle_mesh_errors():

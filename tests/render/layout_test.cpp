@@ -275,7 +275,7 @@ TEST(Plots, BernsteinBasisPanel) {
   EXPECT_EQ(bernstein_basis_panel(20, true)->bernstein_graphs.front().index, 1);
   EXPECT_FALSE(bernstein_basis_panel(0));
   EXPECT_FALSE(bernstein_basis_panel(1, true));
-  EXPECT_FALSE(bernstein_basis_panel(kMaxPlottedBasisDegree + 1));
+  EXPECT_FALSE(bernstein_basis_panel(tolerances::kMaxPlottedBasisDegree + 1));
 }
 
 RC_GTEST_PROP(Plots, PlaneCurveProjectsTheCurve, ()) {

@@ -98,11 +98,11 @@ TEST(PlotSources, ExtremeInputsNameTheFileAndTheModel) {
   EXPECT_EQ(e.error().message.rfind("big.csv: ", 0), 0u) << e.error().message;
   // A degree beyond what a figure draws is refused at once, named.
   std::vector<std::vector<double>> many;
-  for (int i = 0; i <= kMaxPlottedCurveDegree + 1; ++i) many.push_back({static_cast<double>(i), 0.0});
+  for (int i = 0; i <= tolerances::kMaxPlottedCurveDegree + 1; ++i) many.push_back({static_cast<double>(i), 0.0});
   e = plot_figure({curve_source("high.csv", many)}, {});
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message.rfind("high.csv: ", 0), 0u) << e.error().message;
-  EXPECT_NE(e.error().message.find(std::to_string(kMaxPlottedCurveDegree)), std::string::npos);
+  EXPECT_NE(e.error().message.find(std::to_string(tolerances::kMaxPlottedCurveDegree)), std::string::npos);
 }
 
 TEST(PlotSources, LayoutErrorsNameTheCurvesFile) {

@@ -137,7 +137,7 @@ TEST(Svg, IsDeterministic) {
   EXPECT_EQ(svg_document(*a), svg_document(*b));
 }
 
-// The drawn polyline must stay within kCurveTolerancePixels of the curve, in
+// The drawn polyline must stay within tolerances::kCurveTolerancePixels of the curve, in
 // pixels, after the SVG's rounding to 1/100 px: every densely sampled curve
 // point lies within 0.25 px (+ rounding) of the polyline, and every vertex
 // lies on the curve (within rounding + sampling error).
@@ -159,7 +159,7 @@ void expect_polyline_within_tolerance(const BezierCurve& curve, bool equal_aspec
   const double rounding = 0.005 * std::sqrt(2.0);
   double worst = 0.0;
   for (auto s : samples) worst = std::max(worst, distance_to_polyline(s, line));
-  EXPECT_LE(worst, kCurveTolerancePixels + rounding);
+  EXPECT_LE(worst, tolerances::kCurveTolerancePixels + rounding);
   // Vertices on the curve: nearest sample within rounding + half a sample step.
   double step = 0.0;
   for (std::size_t i = 0; i + 1 < samples.size(); ++i) step = std::max(step, distance(samples[i], samples[i + 1]));
@@ -202,7 +202,7 @@ TEST(Svg, RationalCurveWithinTolerance) {
   for (int i = 0; i <= 2000; ++i) {
     const double a = 0.5 * std::numbers::pi * i / 2000.0;
     const Vec2 q = (*frames)[0].to_pixels(Vec2{{std::cos(a), std::sin(a)}});
-    EXPECT_LE(distance_to_polyline(q, line), kCurveTolerancePixels + 0.01);
+    EXPECT_LE(distance_to_polyline(q, line), tolerances::kCurveTolerancePixels + 0.01);
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace casteljau {
 
@@ -167,8 +168,10 @@ inline constexpr double kFitSingularPivot = 1e-13;
 /// The range of λ that GCV searches, in decades around the scale
 /// λ₀ = tr(BᵀB) / tr(Ω) where data term and penalty weigh alike: from
 /// λ₀ 10^-10 (the fit all but interpolates: 1 − tr H/(m+1) is at the level
-/// of rounding and GCV is noise) to λ₀ 10^6 (the fit is the least-squares
-/// straight line to within 1e-6 of the data's scale).
+/// of rounding and GCV is noise) to λ₀ 10^6 (heavily smoothed: about 5
+/// effective degrees of freedom, tr H, on 200 noisy points, already far
+/// past where GCV's minimum lies for any data with a visible shape; the
+/// straight line itself is only the limit λ → ∞).
 inline constexpr double kGcvSearchDecadesBelow = 10.0;
 inline constexpr double kGcvSearchDecadesAbove = 6.0;
 
@@ -277,7 +280,7 @@ inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{1} << 30;
 /// do we, for a link chain or a loop. A count of links, no unit.
 inline constexpr int kMaxSymbolicLinks = 40;
 
-// --- Tessellation and meshes (helper C: ops/tessellate.hpp, ops/mesh.hpp) ----
+// --- Tessellation and meshes (ops/tessellate.hpp, ops/mesh.hpp) ---------------
 
 /// Smallest tessellation tolerance accepted, in ulps (2^-52) of the patches'
 /// scale (their largest absolute coordinate, sampled). The tessellator
@@ -337,13 +340,65 @@ inline constexpr double kMeshSharedEdgeRelative = 1e-9;
 /// Vertices of one edge are never merged with each other.
 inline constexpr double kMeshSameEdgeParameter = 1e-12;
 
-// --- Surface figures (helper D: render/surface_plots.hpp) --------------------
+/// Subcells (in all patches together) whose second differences estimate, before
+/// any refinement, how many cells a tessellation needs at least
+/// (src/ops/tessellate_estimate.hpp): each knot span gets m x m of them, m =
+/// max(1, floor(sqrt(4096 / spans))), and costs one grid batch of (2m + 1)^2
+/// points. 4096 subcells resolve the curvature of smooth surfaces far finer
+/// than the 10^6 and more cells at which the estimate can refuse a request,
+/// for about 2 x 10^4 surface points: milliseconds, a few per cent of the
+/// smallest tessellation. Unit: subcells.
+inline constexpr std::size_t kMeshEstimateSubcells = 4096;
+
+/// How far below the limit the up-front estimate of a tessellation must stay
+/// for the tolerance it suggests to fit (a refused request names the
+/// tolerance at which the estimate is kMaxMeshTriangles / 8). The estimate
+/// counts two triangles a cell where a fan has four, and the ideal cell size
+/// where the quadtree's halving gives cells down to half that size each way,
+/// so the real count is 2 to 8 times the estimate: measured 3.3 to 7.9 on a
+/// sphere, two tori, a bicubic patch, a paraboloid and a bicubic B-spline
+/// with a bump, from 0.01 to 3e-5 (tests/ops/tessellate_estimate_test.cpp
+/// records the ratios).
+/// Dimensionless.
+inline constexpr double kMeshEstimateMargin = 8.0;
+
+/// Most progress reports of one tessellation (ops/tessellate.hpp): a report
+/// whenever the fraction done has grown by 1/200, a half per cent, which a
+/// terminal line shows as smooth progress at a negligible cost. Unit: calls.
+inline constexpr int kMeshProgressReports = 200;
+
+// --- Surface figures (render/surface_plots.hpp) -------------------------------
 
 /// Distance tolerance of the shaded image of `plot` and the gallery, relative
 /// to the diagonal of the surfaces' control-point box (dimensionless): 1/500
 /// of the figure's extent is about one pixel in a 700-pixel panel, so the
 /// facets of the mesh do not show in the shading.
 inline constexpr double kShadedSurfaceRelativeTolerance = 2e-3;
+
+// --- Figures (render/layout.hpp, render/plots.hpp) ------------------------------
+
+/// A flattened curve deviates from the true curve by at most this many pixels
+/// on screen: below what anti-aliasing can show, so curves look smooth.
+inline constexpr double kCurveTolerancePixels = 0.25;
+
+/// Largest Bernstein degree plotted (n + 1 curves of degree n in one figure;
+/// beyond this the figure is an unreadable black area and the work is wasted).
+inline constexpr int kMaxPlottedBasisDegree = 1000;
+
+/// Largest degree of a curve piece a figure draws. Certifying a segment of a
+/// degree-n piece costs two de Casteljau triangles, O(n^2), per trial step
+/// (ops/flatten.hpp), and a curve of random control points needs about
+/// 50 n^0.4 segments at a quarter pixel (124 at n = 100, 473 at n = 2000):
+/// degree 2000 draws in about 6 s of one core, degree 10,000 (what model JSON
+/// accepts) would take minutes. Beyond this, figures refuse the curve at once
+/// (render/layout.hpp, check_plotted_degree).
+inline constexpr int kMaxPlottedCurveDegree = 2000;
+
+/// Largest width, height or diagonal of the data one figure shows, in model
+/// units (about 4.4e304): a range is widened by 5 % margins and, for equal
+/// aspect, stretched by up to the plot area's aspect ratio (at most 16384 / 10
+/// pixels), and 2^-12 of the largest double keeps all of that finite.
+inline constexpr double kMaxPlottedWidth = std::numeric_limits<double>::max() / 4096.0;
 
 }  // namespace tolerances
 }  // namespace casteljau

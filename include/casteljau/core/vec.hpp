@@ -67,4 +67,10 @@ Vec<D> lerp(const Vec<D>& a, const Vec<D>& b, double t) { return a + t * (b - a)
 /// z-component of the cross product of two plane vectors (twice the signed triangle area).
 inline double cross(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
 
+/// Cross product of two space vectors: orthogonal to both, of length |a| |b| sin(angle)
+/// (twice the area of the triangle they span), right-handed.
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return Vec3{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+
 }  // namespace casteljau

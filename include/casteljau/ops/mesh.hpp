@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 #include "casteljau/core/point_array.hpp"
+#include "casteljau/core/vec.hpp"
 
 namespace casteljau {
 
@@ -22,6 +23,8 @@ struct TriangleMesh {
 
 /// How the triangles of a mesh meet along their edges.
 struct MeshTopology {
+  /// Triangles of the mesh.
+  std::size_t triangles = 0;
   /// Edges used by exactly one triangle (the mesh's open boundary).
   std::size_t boundary_edges = 0;
   /// Edges used by three or more triangles.
@@ -31,13 +34,19 @@ struct MeshTopology {
   std::size_t inconsistently_oriented_edges = 0;
   /// Triangles with two equal vertex indices or zero area.
   std::size_t degenerate_triangles = 0;
-  /// Closed and edge-manifold: every edge has exactly two triangles, used in
-  /// opposite directions, and no triangle is degenerate.
+  /// Closed and edge-manifold: there are triangles, every edge has exactly
+  /// two, used in opposite directions, and no triangle is degenerate. A mesh
+  /// without triangles encloses nothing: it is not watertight.
   bool watertight() const noexcept {
-    return boundary_edges == 0 && non_manifold_edges == 0 && inconsistently_oriented_edges == 0 &&
+    return triangles > 0 && boundary_edges == 0 && non_manifold_edges == 0 && inconsistently_oriented_edges == 0 &&
            degenerate_triangles == 0;
   }
 };
+
+/// True when the triangle (a, b, c) has zero area to rounding: the cross
+/// product of two of its edges is at most tolerances::kRoundingSlack ulps of
+/// the product of their lengths (the sine of their angle is rounding noise).
+bool has_zero_area(const Vec3& a, const Vec3& b, const Vec3& c);
 
 /// Counts the mesh's boundary, non-manifold and inconsistently oriented edges
 /// and degenerate triangles (an edge map, O(t log t)).

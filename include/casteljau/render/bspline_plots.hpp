@@ -83,7 +83,7 @@ BSplineCurve basis_function_curve(std::span<const double> knots, int degree, int
 /// dots on the u axis ("×m" beside a knot of multiplicity m > 1), and the
 /// parts outside the domain [t_p, t_{n+1}], where the sum is below 1, shaded.
 /// Errors: a degree outside [0, tolerances::kMaxBSplineDegree], more than
-/// kMaxPlottedBasisDegree + 1 functions, knots that validate_knots refuses
+/// tolerances::kMaxPlottedBasisDegree + 1 functions, knots that validate_knots refuses
 /// for `degree` (with the count of control points they imply).
 Expected<Panel> bspline_basis_panel(std::span<const double> knots, int degree);
 

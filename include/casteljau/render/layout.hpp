@@ -16,29 +16,7 @@
 
 namespace casteljau::render {
 
-/// A flattened curve deviates from the true curve by at most this many pixels
-/// on screen: below what anti-aliasing can show, so curves look smooth.
-inline constexpr double kCurveTolerancePixels = 0.25;
-
-/// Largest Bernstein degree plotted (n + 1 curves of degree n in one figure;
-/// beyond this the figure is an unreadable black area and the work is wasted).
-inline constexpr int kMaxPlottedBasisDegree = 1000;
-
-/// Largest degree of a curve piece a figure draws. Certifying a segment of a
-/// degree-n piece costs two de Casteljau triangles, O(n^2), per trial step
-/// (ops/flatten.hpp), and a curve of random control points needs about
-/// 50 n^0.4 segments at a quarter pixel (124 at n = 100, 473 at n = 2000):
-/// degree 2000 draws in about 6 s of one core, degree 10,000 (what model JSON
-/// accepts) would take minutes. Beyond this, figures refuse the curve at once.
-inline constexpr int kMaxPlottedCurveDegree = 2000;
-
-/// Largest width, height or diagonal of the data one figure shows, in model
-/// units (about 4.4e304): a range is widened by 5 % margins and, for equal
-/// aspect, stretched by up to the plot area's aspect ratio (at most 16384 / 10
-/// pixels), and 2^-12 of the largest double keeps all of that finite.
-inline constexpr double kMaxPlottedWidth = 1.7976931348623157e308 / 4096.0;
-
-/// An error for a curve piece of degree beyond kMaxPlottedCurveDegree (the
+/// An error for a curve piece of degree beyond tolerances::kMaxPlottedCurveDegree (the
 /// message says why and what to do instead), else nothing.
 Status check_plotted_degree(int degree);
 

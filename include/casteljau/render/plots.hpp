@@ -51,7 +51,7 @@ BezierCurve bernstein_graph(int n, int k);
 /// A panel with B_{n,k} for k = 0..n (or k = 1..n-1 with `without_ends`),
 /// black like the notebook's plot_bernstein, as BernsteinGraphItems (drawn
 /// from their closed form, bernstein_graph.hpp). Errors: n < 1, n beyond
-/// kMaxPlottedBasisDegree, `without_ends` with n < 2 (nothing left to draw).
+/// tolerances::kMaxPlottedBasisDegree, `without_ends` with n < 2 (nothing left to draw).
 Expected<Panel> bernstein_basis_panel(int n, bool without_ends = false);
 
 /// A whole figure of the basis (title "Bernstein basis, n = ...").
@@ -90,12 +90,12 @@ struct PlotOptions {
 /// the model, "file[i]", when it holds several); so do layout errors about
 /// its curves (CurveItem::source). Errors: no source; a construction
 /// parameter outside a curve's domain; a rational curve of dimension 1; a
-/// curve piece of degree beyond kMaxPlottedCurveDegree (check_plotted_degree);
-/// control points (or data points) wider than kMaxPlottedWidth, alone or together.
+/// curve piece of degree beyond tolerances::kMaxPlottedCurveDegree (check_plotted_degree);
+/// control points (or data points) wider than tolerances::kMaxPlottedWidth, alone or together.
 Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotOptions& options);
 
 /// An error "<subject> x from a to b, too wide to plot ..." (or the diagonal,
-/// naming both ranges) when the points' box is wider than kMaxPlottedWidth,
+/// naming both ranges) when the points' box is wider than tolerances::kMaxPlottedWidth,
 /// beyond what a figure can map to pixels, else nothing. `subject` names what
 /// spans it ("head.json: the points span").
 Status check_plottable_extent(const std::vector<Vec2>& points, const std::string& subject);
