@@ -97,14 +97,9 @@ Expected<FitRequest> request_of(const FitOptions& options) {
   return request;
 }
 
-/// "head.csv: <message>": library errors about the data name the file.
-Error in_file(const FitOptions& options, const Error& error) {
-  return Error{fmt::format("{}: {}", display_name(options.points), error.message)};
-}
-
 Expected<BSplineFit> compute_fit(const FitRequest& request, const FitOptions& options, const PointArray& points) {
   auto parameters = options.function ? function_parameters(points) : parameter_values(points, request.kind);
-  if (!parameters) return in_file(options, parameters.error());
+  if (!parameters) return in_file(options.points, parameters.error());
   Expected<BSplineFit> fit = Error{};
   // GCV over 10⁶ points or a tolerance near the noise takes seconds: say how far
   // it is (on a terminal's stderr, erased before anything else is printed).
@@ -122,7 +117,7 @@ Expected<BSplineFit> compute_fit(const FitRequest& request, const FitOptions& op
   } else {
     fit = fit_least_squares(points, *parameters, request.degree, request.control_points, request.ends);
   }
-  if (!fit) return in_file(options, fit.error());
+  if (!fit) return in_file(options.points, fit.error());
   return fit;
 }
 

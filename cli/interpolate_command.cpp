@@ -147,11 +147,6 @@ Expected<std::vector<double>> parameters_of(const PointArray& points, const Inte
   return parameter_values(points, kind, options.closed);
 }
 
-/// "head.csv: <message>": library errors about the data name the file.
-Error in_file(const InterpolateOptions& options, const Error& error) {
-  return Error{fmt::format("{}: {}", display_name(options.points), error.message)};
-}
-
 Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& options, PointArray points) {
   // --- options shared by several methods --------------------------------
   Parameterization kind = Parameterization::uniform;
@@ -168,20 +163,20 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
     case Method::c1_bezier: {
       double alpha = 1.0;
       if (given(options.alpha_option)) {
-        auto value = parse_number(options.alpha);
-        if (!value) return Error{"--alpha: " + value.error().message};
+        auto value = number_option("--alpha", options.alpha);
+        if (!value) return value.error();
         if (!(*value > 0.0)) return Error{fmt::format("--alpha: {} is not > 0 (the tangents are divided by 3 alpha)", *value)};
         alpha = *value;
       }
       auto curve = interpolate_c1_bezier(points, alpha, options.closed);
-      if (!curve) return in_file(options, curve.error());
+      if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }
     case Method::catmull_rom: {
       auto parameters = parameter_values(points, kind, options.closed);
-      if (!parameters) return in_file(options, parameters.error());
+      if (!parameters) return in_file(options.points, parameters.error());
       auto curve = interpolate_catmull_rom(points, *parameters, options.closed);
-      if (!curve) return in_file(options, curve.error());
+      if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }
     case Method::cubic: {
@@ -219,9 +214,9 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
         ends.end_tangent = std::move(*end);
       }
       auto parameters = parameters_of(points, options, kind);
-      if (!parameters) return in_file(options, parameters.error());
+      if (!parameters) return in_file(options.points, parameters.error());
       auto curve = interpolate_cubic(points, *parameters, ends);
-      if (!curve) return in_file(options, curve.error());
+      if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }
     case Method::bspline: {
@@ -243,9 +238,9 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
         derivatives.push_back(EndDerivative{true, 1, std::move(*end)});
       }
       auto parameters = parameters_of(points, options, kind);
-      if (!parameters) return in_file(options, parameters.error());
+      if (!parameters) return in_file(options.points, parameters.error());
       auto curve = interpolate_bspline(points, *parameters, degree, derivatives);
-      if (!curve) return in_file(options, curve.error());
+      if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }
     case Method::lagrange: {
@@ -261,26 +256,26 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
           return Error{"--nodes does not apply to --function: x (the first column) gives the nodes"};
         }
         if (points.size() < 2) {
-          return in_file(options, Error{fmt::format("interpolation needs at least 2 points, got {}", points.size())});
+          return in_file(options.points, Error{fmt::format("interpolation needs at least 2 points, got {}", points.size())});
         }
         if (options.nodes == "chebyshev") {
           auto nodes = chebyshev_parameters(points.size());
-          if (!nodes) return in_file(options, nodes.error());
+          if (!nodes) return in_file(options.points, nodes.error());
           parameters = std::move(*nodes);
         } else {
           auto uniform = parameter_values(points, Parameterization::uniform);
-          if (!uniform) return in_file(options, uniform.error());
+          if (!uniform) return in_file(options.points, uniform.error());
           parameters = std::move(*uniform);
         }
       } else {
         auto values = parameters_of(points, options, kind);
-        if (!values) return in_file(options, values.error());
+        if (!values) return in_file(options.points, values.error());
         parameters = std::move(*values);
       }
       auto interpolant = interpolate_lagrange(points, parameters);
-      if (!interpolant) return in_file(options, interpolant.error());
+      if (!interpolant) return in_file(options.points, interpolant.error());
       auto curve = to_bezier(*interpolant);
-      if (!curve) return in_file(options, curve.error());
+      if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }
     case Method::natural: {
@@ -291,9 +286,9 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
         order = static_cast<int>(*value);
       }
       auto parameters = parameters_of(points, options, kind);
-      if (!parameters) return in_file(options, parameters.error());
+      if (!parameters) return in_file(options.points, parameters.error());
       auto curve = interpolate_natural(points, *parameters, order);
-      if (!curve) return in_file(options, curve.error());
+      if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }
     case Method::hermite: {
@@ -311,9 +306,9 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
       }
       const PointArray slopes = PointArray::from_trusted(d, std::move(tangents));
       auto parameters = parameter_values(at, kind, options.closed);
-      if (!parameters) return in_file(options, parameters.error());
+      if (!parameters) return in_file(options.points, parameters.error());
       auto curve = interpolate_hermite(at, slopes, *parameters, options.closed);
-      if (!curve) return in_file(options, curve.error());
+      if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }
   }

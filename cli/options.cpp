@@ -107,6 +107,10 @@ int fail(std::string_view message) {
 
 int fail(const Error& error) { return fail(error.message); }
 
+Error in_file(const std::string& path, const Error& error) {
+  return Error{fmt::format("{}: {}", display_name(path), error.message)};
+}
+
 void set_action(CLI::App* command, int& status, CommandFiles files, std::function<int()> run) {
   command->callback([&status, files = std::move(files), run = std::move(run)] {
     if (auto checked = check_files(files); !checked) {

@@ -50,6 +50,9 @@ std::string_view trimmed(std::string_view text);
 /// (piecewise_bezier) in 'm.json'": a model as messages name it.
 std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file);
 
+/// "head.csv: <message>": a library error about a file's data, naming the file.
+Error in_file(const std::string& path, const Error& error);
+
 /// Prints "casteljau: error: <message>" on stderr and returns 2 (bad input).
 /// A progress line on the terminal is erased first (cli/progress.hpp).
 int fail(std::string_view message);

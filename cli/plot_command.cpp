@@ -91,8 +91,8 @@ int run_plot(const PlotCommandOptions& options) {
   plot.bezier.end_tangents = options.tangents;
   plot.basis = options.basis;
   if (!options.construction.empty()) {
-    auto t = parse_number(options.construction);
-    if (!t) return fail("--construction: " + t.error().message);
+    auto t = number_option("--construction", options.construction);
+    if (!t) return fail(t.error());
     plot.bezier.construction = *t;
   }
   // Refuse a bad output name before reading anything.

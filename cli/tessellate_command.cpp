@@ -67,8 +67,8 @@ std::string summary_of(const TriangleMesh& mesh) {
 int run_tessellate(const TessellateOptions& options) {
   auto format = format_of(options.output);
   if (!format) return fail(format.error());
-  auto tolerance = parse_number(options.tolerance);
-  if (!tolerance) return fail("--tolerance: " + tolerance.error().message);
+  auto tolerance = number_option("--tolerance", options.tolerance);
+  if (!tolerance) return fail(tolerance.error());
   if (!(*tolerance > 0.0)) return fail(fmt::format("--tolerance: {} is not > 0", *tolerance));
   auto models = read_models_json(options.model);
   if (!models) return fail(models.error());
@@ -90,7 +90,7 @@ int run_tessellate(const TessellateOptions& options) {
     TerminalProgress progress("tessellate");
     return tessellate(views, Tolerance{*tolerance}, progress.callback());
   }();
-  if (!mesh) return fail(fmt::format("{}: {}", display_name(options.model), mesh.error().message));
+  if (!mesh) return fail(in_file(options.model, mesh.error()));
   std::string bytes;
   switch (*format) {
     case MeshFormat::obj: bytes = to_obj(*mesh); break;

@@ -742,8 +742,9 @@ Vec2 PanelFrame::from_pixels(Vec2 pixel) const {
 
 Status check_plotted_degree(int degree) {
   if (degree <= tolerances::kMaxPlottedCurveDegree) return {};
-  return Error{fmt::format("a curve of degree {} is beyond what a figure draws (degree <= {}: certifying its drawing "
-                           "costs O(n^2) per segment, minutes at this degree); eval --samples gives its points",
+  return Error{fmt::format("a curve of degree {} is beyond what a figure draws (at most degree {}: certifying the "
+                           "drawing costs O(n^2) per segment, seconds at degree 1000, minutes near 10,000); "
+                           "eval --samples gives its points",
                            degree, tolerances::kMaxPlottedCurveDegree)};
 }
 

@@ -388,11 +388,13 @@ inline constexpr int kMaxPlottedBasisDegree = 1000;
 /// Largest degree of a curve piece a figure draws. Certifying a segment of a
 /// degree-n piece costs two de Casteljau triangles, O(n^2), per trial step
 /// (ops/flatten.hpp), and a curve of random control points needs about
-/// 50 n^0.4 segments at a quarter pixel (124 at n = 100, 473 at n = 2000):
-/// degree 2000 draws in about 6 s of one core, degree 10,000 (what model JSON
-/// accepts) would take minutes. Beyond this, figures refuse the curve at once
-/// (render/layout.hpp, check_plotted_degree).
-inline constexpr int kMaxPlottedCurveDegree = 2000;
+/// 50 n^0.4 segments at a quarter pixel (124 at n = 100, 473 at n = 2000),
+/// so the time grows like n^2.4 to n^3: measured 0.5 s at degree 500, 1.4 s
+/// at 1000, 12 s at 2000 (one core, random control points, 2026-12-01);
+/// degree 10,000 (what model JSON accepts) would take many minutes. Beyond
+/// 1000, the limit of the Bernstein figures too, figures refuse the curve at
+/// once (render/layout.hpp, check_plotted_degree).
+inline constexpr int kMaxPlottedCurveDegree = 1000;
 
 /// Largest width, height or diagonal of the data one figure shows, in model
 /// units (about 4.4e304): a range is widened by 5 % margins and, for equal
