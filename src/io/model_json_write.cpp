@@ -8,6 +8,7 @@
 #include <iterator>
 #include <span>
 #include <utility>
+#include <variant>
 
 #include "casteljau/io/model_json.hpp"
 
@@ -120,28 +121,7 @@ void write_coons(fmt::memory_buffer& out, const CoonsPatch& patch) {
   fmt::format_to(std::back_inserter(out), "}}}}");
 }
 
-void write_model(fmt::memory_buffer& out, const Model& model) {
-  if (const auto* surface = std::get_if<BezierSurface>(&model)) {
-    write_bezier_surface(out, *surface);
-    return;
-  }
-  if (const auto* surface = std::get_if<BSplineSurface>(&model)) {
-    write_bspline_surface(out, *surface);
-    return;
-  }
-  if (const auto* patch = std::get_if<CoonsPatch>(&model)) {
-    write_coons(out, *patch);
-    return;
-  }
-  if (const auto* curve = std::get_if<BezierCurve>(&model)) {
-    write_bezier(out, *curve);
-    return;
-  }
-  if (const auto* curve = std::get_if<BSplineCurve>(&model)) {
-    write_bspline(out, *curve);
-    return;
-  }
-  const auto& piecewise = std::get<PiecewiseBezierCurve>(model);
+void write_piecewise(fmt::memory_buffer& out, const PiecewiseBezierCurve& piecewise) {
   fmt::format_to(std::back_inserter(out), "{{\"type\":\"piecewise_bezier\",\"pieces\":[");
   for (std::size_t i = 0; i < piecewise.pieces().size(); ++i) {
     if (i > 0) out.push_back(',');
@@ -153,6 +133,18 @@ void write_model(fmt::memory_buffer& out, const Model& model) {
     }
   }
   fmt::format_to(std::back_inserter(out), "]}}");
+}
+
+/// The writer of each Model alternative, by overload.
+void write_one(fmt::memory_buffer& out, const BezierCurve& curve) { write_bezier(out, curve); }
+void write_one(fmt::memory_buffer& out, const BSplineCurve& curve) { write_bspline(out, curve); }
+void write_one(fmt::memory_buffer& out, const PiecewiseBezierCurve& curve) { write_piecewise(out, curve); }
+void write_one(fmt::memory_buffer& out, const BezierSurface& surface) { write_bezier_surface(out, surface); }
+void write_one(fmt::memory_buffer& out, const BSplineSurface& surface) { write_bspline_surface(out, surface); }
+void write_one(fmt::memory_buffer& out, const CoonsPatch& patch) { write_coons(out, patch); }
+
+void write_model(fmt::memory_buffer& out, const Model& model) {
+  std::visit([&out](const auto& alternative) { write_one(out, alternative); }, model);
 }
 
 }  // namespace

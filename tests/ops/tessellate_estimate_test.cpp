@@ -22,10 +22,13 @@
 #include "casteljau/surfaces/bezier_surface.hpp"
 #include "casteljau/surfaces/revolution.hpp"
 #include "casteljau/surfaces/surface_view.hpp"
+#include "support/test_surfaces.hpp"
 #include "../../src/ops/tessellate_estimate.hpp"
 
 namespace casteljau {
 namespace {
+
+using test::bicubic_patch;
 
 using tessellation::CellEstimate;
 using tessellation::Patch;
@@ -39,15 +42,6 @@ BezierSurface paraboloid(double a, double b) {
     for (int j = 0; j < 3; ++j) points.insert(points.end(), {i / 2.0, j / 2.0, (i == 2 ? a : 0.0) + (j == 2 ? b : 0.0)});
   }
   return BezierSurface::from_trusted(ControlNet::from_trusted(3, 3, PointArray::from_trusted(3, points)));
-}
-
-BezierSurface bicubic_patch() {
-  const double z[4][4] = {{0, 0.5, 0, 0}, {0.5, 2, -1, 0}, {0, -1, 1.5, 0.3}, {0, 0, 0.3, 0}};
-  std::vector<double> points;
-  for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 4; ++j) points.insert(points.end(), {double(i), 2.0 * j / 3.0, z[i][j]});
-  }
-  return BezierSurface::from_trusted(ControlNet::from_trusted(4, 4, PointArray::from_trusted(3, points)));
 }
 
 CellEstimate estimate_of(const SurfaceView& view) {

@@ -36,9 +36,12 @@
 #include "casteljau/surfaces/revolution.hpp"
 #include "casteljau/surfaces/ruled.hpp"
 #include "casteljau/surfaces/surface_view.hpp"
+#include "support/test_surfaces.hpp"
 
 namespace casteljau {
 namespace {
+
+using test::bicubic_patch;
 
 using Vec3 = std::array<double, 3>;
 using Distance = std::function<double(const Vec3&)>;
@@ -65,17 +68,6 @@ BSplineSurface sphere(const Vec3& c, double r) {
   return BSplineSurface::from_trusted(2, 2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1},
                                       {0, 0, 0, 0.5, 0.5, 1, 1, 1},
                                       ControlNet::from_trusted(9, 5, PointArray::from_trusted(3, points)), weights);
-}
-
-/// A bicubic Bézier patch over [0,3] x [0,2] with a saddle and a hump:
-/// x = 3u, y = 2v (control points at i, 2j/3), z from the table.
-BezierSurface bicubic_patch() {
-  const double z[4][4] = {{0, 0.5, 0, 0}, {0.5, 2, -1, 0}, {0, -1, 1.5, 0.3}, {0, 0, 0.3, 0}};
-  std::vector<double> points;
-  for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 4; ++j) points.insert(points.end(), {double(i), 2.0 * j / 3.0, z[i][j]});
-  }
-  return BezierSurface::from_trusted(ControlNet::from_trusted(4, 4, PointArray::from_trusted(3, points)));
 }
 
 /// A bicubic B-spline surface over [0,7]^2 (10 x 10 control points at the
