@@ -182,12 +182,8 @@ void add_fit_command(CLI::App& app, int& status) {
   options->smoothing_option =
       command->add_option("--smoothing", options->smoothing, "The penalty weight lambda >= 0, or gcv")
           ->type_name("LAMBDA|gcv");
-  options->param_option =
-      command->add_option("--param", options->param, "Parameter values: uniform (default), chord or centripetal")
-          ->type_name("KIND");
-  command->add_flag("--function", options->function,
-                    "The first column is x (strictly increasing) and the parameter: the curve (x, s(x)) over "
-                    "[x_0, x_n]");
+  options->param_option = add_param_option(command, options->param);
+  add_function_flag(command, options->function);
   command->add_flag("--free-ends", options->free_ends,
                     "Fit the first and last points like the others (default: the curve passes through them)");
   CLI::Option* output = command->add_option("-o,--output", options->output, kOutputHelp)->type_name("FILE");

@@ -350,9 +350,7 @@ void add_interpolate_command(CLI::App& app, int& status) {
       command->add_option("--alpha", options->alpha, "c1-bezier: tangent divisor alpha > 0 (default 1; 2 gives "
                                                      "uniform Catmull-Rom tangents)")
           ->type_name("A");
-  options->param_option =
-      command->add_option("--param", options->param, "Parameter values: uniform (default), chord or centripetal")
-          ->type_name("KIND");
+  options->param_option = add_param_option(command, options->param);
   options->end_option = command
                             ->add_option("--end", options->end,
                                          "cubic: natural, clamped, not-a-knot (default) or periodic (default with "
@@ -378,9 +376,7 @@ void add_interpolate_command(CLI::App& app, int& status) {
   command->add_flag("--closed", options->closed,
                     "A closed curve: the closing segment runs from the last point back to the first (a last point "
                     "equal to the first is dropped)");
-  command->add_flag("--function", options->function,
-                    "The first column is x (strictly increasing) and the parameter: the curve (x, s(x)) over "
-                    "[x_0, x_n]");
+  add_function_flag(command, options->function);
   CLI::Option* output = command->add_option("-o,--output", options->output, kOutputHelp)->type_name("FILE");
   set_action(command, status, {{points}, output}, [options] { return run_interpolate(*options); });
 }

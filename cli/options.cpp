@@ -107,6 +107,17 @@ int fail(std::string_view message) {
 
 int fail(const Error& error) { return fail(error.message); }
 
+CLI::Option* add_param_option(CLI::App* command, std::string& param) {
+  return command->add_option("--param", param, "Parameter values: uniform (default), chord or centripetal")
+      ->type_name("KIND");
+}
+
+CLI::Option* add_function_flag(CLI::App* command, bool& function) {
+  return command->add_flag("--function", function,
+                           "The first column is x (strictly increasing) and the parameter: the curve (x, s(x)) over "
+                           "[x_0, x_n]");
+}
+
 Error in_file(const std::string& path, const Error& error) {
   return Error{fmt::format("{}: {}", display_name(path), error.message)};
 }

@@ -59,6 +59,11 @@ int fail(std::string_view message);
 /// The same for an Error from the library.
 int fail(const Error& error);
 
+/// --param KIND, the points' parameter values, as fit and interpolate take it.
+CLI::Option* add_param_option(CLI::App* command, std::string& param);
+/// --function (the first column is x and the parameter), as fit and interpolate take it.
+CLI::Option* add_function_flag(CLI::App* command, bool& function);
+
 /// The options of a subcommand that name files: `inputs`, whose every value
 /// is a file the command reads (MODEL, --params FILE, each INPUT of plot),
 /// and `output`, the file it writes (-o; "-" is standard output).
