@@ -168,10 +168,10 @@ inline constexpr double kFitSingularPivot = 1e-13;
 /// The range of λ that GCV searches, in decades around the scale
 /// λ₀ = tr(BᵀB) / tr(Ω) where data term and penalty weigh alike: from
 /// λ₀ 10^-10 (the fit all but interpolates: 1 − tr H/(m+1) is at the level
-/// of rounding and GCV is noise) to λ₀ 10^6 (heavily smoothed: about 5
-/// effective degrees of freedom, tr H, on 200 noisy points, already far
-/// past where GCV's minimum lies for any data with a visible shape; the
-/// straight line itself is only the limit λ → ∞).
+/// of rounding and GCV is noise) to λ₀ 10^6 (heavily smoothed, nearly the
+/// least-squares straight line: tr H = 3.3 effective degrees of freedom on
+/// the 102 points of examples/noisy.csv, where the line has 2 and GCV's
+/// choice 12.3; the line itself is only the limit λ → ∞).
 inline constexpr double kGcvSearchDecadesBelow = 10.0;
 inline constexpr double kGcvSearchDecadesAbove = 6.0;
 
