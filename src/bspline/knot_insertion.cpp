@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "casteljau/bspline/basis.hpp"
+#include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
 #include "working_rows.hpp"
@@ -153,6 +154,7 @@ Expected<std::vector<double>> checked_new_knots(const BSplineCurve& curve, std::
                    std::to_string(have) + "), above degree + 1 = " + std::to_string(p + 1)};
     i = j;
   }
+  if (auto spans = check_added_knot_spans(curve.knots(), sorted, what); !spans) return spans.error();
   return sorted;
 }
 

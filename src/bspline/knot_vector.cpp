@@ -1,6 +1,7 @@
 // Knot vectors: validation, builders, multiplicities, the Rhino convention.
 #include "casteljau/bspline/knot_vector.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <string>
@@ -74,6 +75,37 @@ Status validate_knots(std::span<const double> knots, int degree, std::size_t con
   assert(degree >= 0 && control_point_count >= static_cast<std::size_t>(degree) + 1);
   return check_knots(knots, degree, control_point_count + static_cast<std::size_t>(degree) + 1, 0,
                      "a B-spline of this degree and control point count", true);
+}
+
+Status check_added_knot_spans(std::span<const double> knots, std::span<const double> added, const std::string& what) {
+  assert(std::is_sorted(knots.begin(), knots.end()) && std::is_sorted(added.begin(), added.end()));
+  for (std::size_t i = 0; i < added.size(); ++i) {
+    const double u = added[i];
+    if (i > 0 && added[i - 1] == u) continue;
+    const std::string name = added.size() == 1 ? what : what + " " + std::to_string(i);
+    // The nearest old knots on each side, by binary search.
+    const auto above = std::upper_bound(knots.begin(), knots.end(), u);
+    if (above != knots.begin() && !is_valid_span(*(above - 1), u)) {
+      const auto index = static_cast<std::size_t>(above - knots.begin()) - 1;
+      return Error{"the " + name + " (" + number_text(u) + ") and knot " + std::to_string(index) + " (" +
+                   number_text(*(above - 1)) + ") are " + number_text(u - *(above - 1)) +
+                   " apart, less than the narrowest knot span " + number_text(tolerances::kMinKnotSpan)};
+    }
+    if (above != knots.end() && !is_valid_span(u, *above)) {
+      const auto index = static_cast<std::size_t>(above - knots.begin());
+      return Error{"the " + name + " (" + number_text(u) + ") and knot " + std::to_string(index) + " (" +
+                   number_text(*above) + ") are " + number_text(*above - u) +
+                   " apart, less than the narrowest knot span " + number_text(tolerances::kMinKnotSpan)};
+    }
+    // The next distinct added knot.
+    std::size_t next = i + 1;
+    while (next < added.size() && added[next] == u) ++next;
+    if (next < added.size() && !is_valid_span(u, added[next]))
+      return Error{"the " + what + "s " + std::to_string(i) + " and " + std::to_string(next) + " (" + number_text(u) +
+                   " and " + number_text(added[next]) + ") are " + number_text(added[next] - u) +
+                   " apart, less than the narrowest knot span " + number_text(tolerances::kMinKnotSpan)};
+  }
+  return {};
 }
 
 Status check_knot_structure(std::span<const double> knots, int degree, std::size_t control_point_count) {

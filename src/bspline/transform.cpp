@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/core/model_numbers.hpp"
 #include "../core/number_text.hpp"
 #include "working_rows.hpp"
 
@@ -37,6 +39,8 @@ Expected<BSplineCurve> reparameterized(const BSplineCurve& curve, Interval targe
   if (!std::isfinite(target.lower) || !std::isfinite(target.upper) || !(target.lower < target.upper))
     return Error{"the new domain [" + number_text(target.lower) + ", " + number_text(target.upper) +
                  "] must be finite with lower < upper"};
+  if (auto ok = check_knot(target.lower, "the new domain's lower end"); !ok) return ok.error();
+  if (auto ok = check_knot(target.upper, "the new domain's upper end"); !ok) return ok.error();
   const Interval domain = curve.domain();
   const double a = domain.lower, b = domain.upper;
   const double scale = target.length() / domain.length();
@@ -52,6 +56,14 @@ Expected<BSplineCurve> reparameterized(const BSplineCurve& curve, Interval targe
   }
   // Rounding can make an interior knot land beyond an end: keep the order.
   for (std::size_t i = 1; i < knots.size(); ++i) knots[i] = std::max(knots[i], knots[i - 1]);
+  // Shrinking the domain shrinks every span: each must stay a valid knot span.
+  for (std::size_t i = 1; i < knots.size(); ++i) {
+    if (auto ok = check_span(knots[i - 1], knots[i],
+                             "on [" + number_text(target.lower) + ", " + number_text(target.upper) + "], knots " +
+                                 std::to_string(i - 1) + " and " + std::to_string(i));
+        !ok)
+      return ok.error();
+  }
   std::vector<double> weights(curve.weights().begin(), curve.weights().end());
   return BSplineCurve::from_trusted(curve.degree(), std::move(knots), curve.control_points(), std::move(weights));
 }
@@ -67,6 +79,8 @@ Expected<std::pair<BSplineCurve, BSplineCurve>> split_at(const BSplineCurve& cur
   if (!(domain.lower < u && u < domain.upper))
     return Error{"the split parameter " + number_text(u) + " is not strictly inside the domain [" +
                  number_text(domain.lower) + ", " + number_text(domain.upper) + "]"};
+  const double cut[] = {u};
+  if (auto spans = check_added_knot_spans(curve.knots(), cut, "split parameter"); !spans) return spans.error();
   // Clamp first and insert u once, so that cutting needs no further
   // insertion and both parts share the very same cut row.
   const detail::CurveRows whole = detail::restrict_to(detail::rows_of(curve), domain.lower, domain.upper);

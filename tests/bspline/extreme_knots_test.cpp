@@ -14,7 +14,9 @@
 
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/bspline/knot_insertion.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/bspline/transform.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/surfaces/bspline_surface.hpp"
 
@@ -109,6 +111,39 @@ TEST(ExtremeKnots, BatchKernelsStayDefinedForComputedCurvesWithASubnormalDomain)
       for (double c : out) EXPECT_EQ(c, expected);
     }
   }
+}
+
+// Operations that place a caller's knot keep the rule of make(): a knot
+// inserted 5e-324 beside another made the derivative NaN (the difference of
+// two control points over a subnormal span overflows).
+TEST(ExtremeKnots, InsertedAndSplitKnotsKeepTheNarrowestSpan) {
+  const BSplineCurve curve = BSplineCurve::from_trusted(1, {0, 0, 1, 1}, line());
+  EXPECT_EQ(message_of(insert_knot(curve, 5e-324)),
+            "the knot to insert (5e-324) and knot 1 (0) are 5e-324 apart, less than the narrowest knot span 1e-100");
+  // Spans that narrow exist only near small knots: the new knots 1e-90 and
+  // 1e-90 + 1e-101 (representable: the ulp there is 1.5e-106) are each far
+  // enough from 0, but not from each other. Equal values are one knot.
+  const double close[] = {1e-90, 1e-90 + 1e-101};
+  EXPECT_EQ(message_of(refine_knots(curve, close)).substr(0, 43), "the new knots 0 and 1 (1e-90 and 1.00000000")
+      << message_of(refine_knots(curve, close));
+  const double twice[] = {0.5, 0.5};
+  EXPECT_TRUE(refine_knots(curve, twice).has_value());
+  EXPECT_EQ(message_of(split_at(curve, 1e-200)).substr(0, 42), "the split parameter (1e-200) and knot 1 (0");
+  // Equal to a knot, or a span of at least 1e-100: accepted, with finite derivatives.
+  const auto beside = insert_knot(curve, 1e-100);
+  ASSERT_TRUE(beside.has_value());
+  EXPECT_TRUE(std::isfinite(derivative_at(*beside, 0.0, 1)[0]));
+  EXPECT_TRUE(insert_knot(*beside, 1e-100).has_value());
+  EXPECT_TRUE(split_at(curve, 0.5).has_value());
+}
+
+TEST(ExtremeKnots, ANewDomainKeepsTheKnotRangeAndTheNarrowestSpan) {
+  const BSplineCurve curve = BSplineCurve::from_trusted(1, {0, 0, 0.5, 1, 1}, PointArray::from_trusted(2, {0, 0, 1, 1, 2, 0}));
+  EXPECT_EQ(message_of(reparameterized(curve, {0.0, 1e-100})),
+            "on [0, 1e-100], knots 1 and 2 (0 and 5e-101) are 5e-101 apart, less than the narrowest knot span 1e-100");
+  EXPECT_TRUE(reparameterized(curve, {0.0, 2e-100}).has_value());
+  EXPECT_EQ(message_of(reparameterized(curve, {0.0, 1e200})),
+            "the new domain's upper end is 1e+200, outside [-1e+100, 1e+100], the range of knots");
 }
 
 }  // namespace

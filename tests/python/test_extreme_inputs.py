@@ -106,3 +106,15 @@ def test_surfaces_refuse_subnormal_spans_in_either_direction():
 def test_interpolation_inputs_outside_the_ranges_raise():
     with pytest.raises(ValueError, match="the range of coordinates"):
         cj.interpolate_c1_bezier(np.array([[0, 0], [1e308, 1], [2, 0]], dtype=float))
+
+
+def test_a_knot_inserted_beside_another_is_refused_not_a_nan_derivative():
+    # insert_knot(c, 5e-324) gave a curve whose derivative was NaN: the new
+    # span is held to the rule make() applies to a model's knots.
+    line = cj.BSplineCurve(1, [0, 0, 1, 1], [(0, 0), (1, 1)])
+    with pytest.raises(ValueError, match=r"the knot to insert \(5e-324\) and knot 1 \(0\) are 5e-324 apart"):
+        cj.insert_knot(line, 5e-324)
+    with pytest.raises(ValueError, match=r"the split parameter \(1e-200\) and knot 1 \(0\)"):
+        cj.split_at(line, 1e-200)
+    beside = cj.insert_knot(line, 1e-100)
+    assert np.all(np.isfinite(cj.derivative_at(beside, 0.0, 1)))

@@ -21,8 +21,9 @@ namespace casteljau {
 /// into their homogeneous points. O(n w + times p w), w = d (+1 if rational).
 /// Errors: u not finite, u outside the domain [t_p, t_{n+1}], times < 0, a
 /// resulting multiplicity above p+1 (at a clamped end u already has p+1),
-/// more than tolerances::kMaxControlPoints control points. times = 0 gives
-/// the curve unchanged.
+/// more than tolerances::kMaxControlPoints control points, u closer than
+/// tolerances::kMinKnotSpan to a knot without being one (check_added_knot_spans:
+/// the new span's derivatives would overflow). times = 0 gives the curve unchanged.
 Expected<BSplineCurve> insert_knot(const BSplineCurve& curve, double u, int times = 1);
 
 /// The curve with every knot of `new_knots` inserted (any order; a value

@@ -29,9 +29,20 @@ Status validate_knots(std::span<const double> knots, int degree, std::size_t con
 
 /// The structure alone, what from_trusted asserts of computed knots: the
 /// count, finite, non-decreasing, multiplicities at most p+1, a non-empty
-/// domain. Computed knots may go beyond validate_knots' ranges (a knot
-/// inserted next to another); the evaluators stay finite for their points.
+/// domain. Computed knots may go beyond validate_knots' ranges where no
+/// caller's value enters (a fit's knots from its data); the operations that
+/// place a caller's knot (insertion, refinement, a split, a new domain) check
+/// it with check_added_knot_spans or check_span.
 Status check_knot_structure(std::span<const double> knots, int degree, std::size_t control_point_count);
+
+/// Knots an operation adds to `knots` (knot insertion, refinement, a split):
+/// each value of `added` (sorted) must be equal to, or at least
+/// tolerances::kMinKnotSpan from, its neighbours among the old and the added
+/// knots, the rule validate_knots applies to a model's knots, so that the
+/// result's derivatives stay finite. `what` names the added knots in the
+/// message: "the knot to insert (5e-324) and knot 1 (0) are 5e-324 apart,
+/// less than the narrowest knot span 1e-100".
+Status check_added_knot_spans(std::span<const double> knots, std::span<const double> added, const std::string& what);
 
 /// Clamped (open) knots with uniform interior spacing over `domain`: p+1
 /// copies of each end, n-p evenly spaced interior knots (The NURBS Book eq.

@@ -22,7 +22,8 @@ BSplineCurve reversed(const BSplineCurve& curve);
 /// the old domain exactly to c and d), the control points are kept, so
 /// C_new(c + (u - a)(d - c)/(b - a)) = C(u) and the k-th derivatives scale
 /// by ((b - a)/(d - c))^k (The NURBS Book §6.1, linear reparameterization).
-/// O(n). Errors: an interval that is not finite or has lower >= upper.
+/// O(n). Errors: an interval that is not finite or has lower >= upper, ends
+/// beyond tolerances::kMaxKnot, a span shrunk below tolerances::kMinKnotSpan.
 Expected<BSplineCurve> reparameterized(const BSplineCurve& curve, Interval domain);
 
 /// The same curve with clamped knots on its domain: both ends inserted to
@@ -39,7 +40,8 @@ BSplineCurve clamped(const BSplineCurve& curve);
 /// control point at the cut, C(u) up to rounding (both parts start from
 /// the same row); at a knot of multiplicity p+1 (a jump) the first part
 /// ends at the left limit and the second starts at the right one.
-/// O(n w + p^2 w). Errors: u not finite or not strictly inside the domain.
+/// O(n w + p^2 w). Errors: u not finite or not strictly inside the domain,
+/// u closer than tolerances::kMinKnotSpan to a knot without being one.
 Expected<std::pair<BSplineCurve, BSplineCurve>> split_at(const BSplineCurve& curve, double u);
 
 }  // namespace casteljau
