@@ -40,7 +40,7 @@ Status check_knot_structure(std::span<const double> knots, int degree, std::size
 /// tolerances::kMinKnotSpan from, its neighbours among the old and the added
 /// knots, the rule validate_knots applies to a model's knots, so that the
 /// result's derivatives stay finite. `what` names the added knots in the
-/// message: "the knot to insert (5e-324) and knot 1 (0) are 5e-324 apart,
+/// message: "knot 1 and the knot to insert (0 and 5e-324) are 5e-324 apart,
 /// less than the narrowest knot span 1e-100".
 Status check_added_knot_spans(std::span<const double> knots, std::span<const double> added, const std::string& what);
 
