@@ -228,6 +228,15 @@ void name_curves(Panel& panel, std::size_t first, const std::string& name) {
   for (std::size_t i = first; i < panel.curves.size(); ++i) panel.curves[i].source = name;
 }
 
+/// An error for a construction asked of a curve beyond kMaxConstructionDegree.
+Status check_construction_degree(int degree, const std::string& name) {
+  if (degree <= tolerances::kMaxConstructionDegree) return {};
+  const long long n = degree;
+  return Error{fmt::format("--construction: {} has degree {}, whose construction is {} segments, too many to show "
+                           "(at most degree {})",
+                           name, degree, n * (n + 1) / 2, tolerances::kMaxConstructionDegree)};
+}
+
 }  // namespace
 
 Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotOptions& options) {
@@ -294,6 +303,9 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
         if (options.bezier.construction && !domain.contains(*options.bezier.construction))
           return Error{fmt::format("--construction {} is outside the domain [{}, {}] of {}", *options.bezier.construction,
                                    domain.lower, domain.upper, name)};
+        if (options.bezier.construction) {
+          if (auto ok = check_construction_degree(spline->degree(), name); !ok) return ok.error();
+        }
         BSplinePlotOptions spline_options;
         spline_options.control_polygon = options.bezier.control_polygon;
         spline_options.control_points = options.bezier.control_points;
@@ -335,7 +347,10 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
         if (!first_degree) first_degree = plane->degree();
         BezierPlotOptions piece_options = options.bezier;
         piece_options.construction.reset();
-        if (construction && construction->first == static_cast<int>(i)) piece_options.construction = construction->second;
+        if (construction && construction->first == static_cast<int>(i)) {
+          if (auto ok = check_construction_degree(plane->degree(), name); !ok) return ok.error();
+          piece_options.construction = construction->second;
+        }
         if (pieces.size() > 1 && options.bezier.end_tangents) piece_options.end_tangents = false;
         add_bezier(panel, *plane, piece_options, color, i == 0 ? label : "");
         if (pieces.size() > 1 && options.bezier.end_tangents && (i == 0 || i + 1 == pieces.size())) {

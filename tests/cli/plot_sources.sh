@@ -68,5 +68,13 @@ fi
 awk 'BEGIN { print "x,y"; srand(7); for (i = 0; i <= 10000; i++) printf "%.6f,%.6f\n", rand(), rand() }' >"$work/high.csv"
 expect_error "degree 10000 refused" "high.csv: a curve of degree 10000 is beyond what a figure draws" \
   plot "$work/high.csv" -o "$work/x.svg"
+# A construction is drawn up to degree 200 (n(n+1)/2 segments), refused beyond.
+head -n 202 "$work/high.csv" >"$work/degree200.csv"
+head -n 203 "$work/high.csv" >"$work/degree201.csv"
+"$casteljau" plot "$work/degree200.csv" --construction 0.5 -o "$work/c200.svg" ||
+  { echo "FAIL: the construction of degree 200 was refused"; failures=$((failures + 1)); }
+expect_error "construction of degree 201 refused" \
+  "--construction: degree201.csv has degree 201, whose construction is 20301 segments, too many to show (at most degree 200)" \
+  plot "$work/degree201.csv" --construction 0.5 -o "$work/c201.svg"
 
 finish plot_sources

@@ -396,6 +396,12 @@ inline constexpr int kMaxPlottedBasisDegree = 1000;
 /// once (render/layout.hpp, check_plotted_degree).
 inline constexpr int kMaxPlottedCurveDegree = 1000;
 
+/// Largest degree whose de Casteljau construction (plot --construction) a
+/// figure draws: its n levels hold n(n+1)/2 segments and n(n-1)/2 points,
+/// 20,100 segments at degree 200 (an SVG of about 1.5 MB, already a dark
+/// tangle); degree 500 wrote 9 MB, degree 1000 took 6 s of CPU for a PNG.
+inline constexpr int kMaxConstructionDegree = 200;
+
 /// Largest width, height or diagonal of the data one figure shows, in model
 /// units (about 4.4e304): a range is widened by 5 % margins and, for equal
 /// aspect, stretched by up to the plot area's aspect ratio (at most 16384 / 10

@@ -89,7 +89,8 @@ struct PlotOptions {
 /// as its construction at u in its domain. Every error names the file (and
 /// the model, "file[i]", when it holds several); so do layout errors about
 /// its curves (CurveItem::source). Errors: no source; a construction
-/// parameter outside a curve's domain; a rational curve of dimension 1; a
+/// parameter outside a curve's domain, or asked of a curve (piece) of degree
+/// beyond tolerances::kMaxConstructionDegree; a rational curve of dimension 1; a
 /// curve piece of degree beyond tolerances::kMaxPlottedCurveDegree (check_plotted_degree);
 /// control points (or data points) wider than tolerances::kMaxPlottedWidth, alone or together.
 Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotOptions& options);
