@@ -79,11 +79,6 @@ Status validate_knots(std::span<const double> knots, int degree, std::size_t con
 
 Status check_added_knot_spans(std::span<const double> knots, std::span<const double> added, const std::string& what) {
   assert(std::is_sorted(knots.begin(), knots.end()) && std::is_sorted(added.begin(), added.end()));
-  // "the <names> (<a> and <b>) are <b - a> apart, ...", as check_span words it.
-  const auto too_close = [](const std::string& names, double a, double b) {
-    return Error{names + " (" + number_text(a) + " and " + number_text(b) + ") are " + number_text(b - a) +
-                 " apart, less than the narrowest knot span " + number_text(tolerances::kMinKnotSpan)};
-  };
   for (std::size_t i = 0; i < added.size(); ++i) {
     const double u = added[i];
     if (i > 0 && added[i - 1] == u) continue;
@@ -92,16 +87,16 @@ Status check_added_knot_spans(std::span<const double> knots, std::span<const dou
     const auto above = std::upper_bound(knots.begin(), knots.end(), u);
     const auto index = static_cast<std::size_t>(above - knots.begin());
     if (above != knots.begin() && !is_valid_span(*(above - 1), u)) {
-      return too_close("knot " + std::to_string(index - 1) + " and " + name, *(above - 1), u);
+      return check_span(*(above - 1), u, "knot " + std::to_string(index - 1) + " and " + name);
     }
     if (above != knots.end() && !is_valid_span(u, *above)) {
-      return too_close(name + " and knot " + std::to_string(index), u, *above);
+      return check_span(u, *above, name + " and knot " + std::to_string(index));
     }
     // The next distinct added knot.
     std::size_t next = i + 1;
     while (next < added.size() && added[next] == u) ++next;
     if (next < added.size() && !is_valid_span(u, added[next])) {
-      return too_close("the " + what + "s " + std::to_string(i) + " and " + std::to_string(next), u, added[next]);
+      return check_span(u, added[next], "the " + what + "s " + std::to_string(i) + " and " + std::to_string(next));
     }
   }
   return {};
