@@ -228,6 +228,13 @@ void name_curves(Panel& panel, std::size_t first, const std::string& name) {
   for (std::size_t i = first; i < panel.curves.size(); ++i) panel.curves[i].source = name;
 }
 
+/// An error for a construction parameter outside the curve's domain.
+Status check_construction_domain(double t, Interval domain, const std::string& name) {
+  if (domain.contains(t)) return {};
+  return Error{fmt::format("--construction {} is outside the domain [{}, {}] of {}", t, domain.lower, domain.upper,
+                           name)};
+}
+
 /// An error for a construction asked of a curve beyond kMaxConstructionDegree.
 Status check_construction_degree(int degree, const std::string& name) {
   if (degree <= tolerances::kMaxConstructionDegree) return {};
@@ -299,11 +306,9 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
       if (first_name.empty()) first_name = name;
       if (const BSplineCurve* spline = bspline_in(source.models[m])) {
         if (auto ok = check_plotted_degree(spline->degree()); !ok) return with_context(ok.error(), name);
-        const Interval domain = spline->domain();
-        if (options.bezier.construction && !domain.contains(*options.bezier.construction))
-          return Error{fmt::format("--construction {} is outside the domain [{}, {}] of {}", *options.bezier.construction,
-                                   domain.lower, domain.upper, name)};
         if (options.bezier.construction) {
+          if (auto ok = check_construction_domain(*options.bezier.construction, spline->domain(), name); !ok)
+            return ok.error();
           if (auto ok = check_construction_degree(spline->degree(), name); !ok) return ok.error();
         }
         BSplinePlotOptions spline_options;
@@ -328,16 +333,15 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
       else pieces = std::get<PiecewiseBezierCurve>(source.models[m]).pieces();
       for (const auto& piece : pieces)
         if (auto ok = check_plotted_degree(piece.degree()); !ok) return with_context(ok.error(), name);
-      const Interval domain = domain_of(source.models[m]);
       std::optional<std::pair<int, double>> construction;
       if (options.bezier.construction) {
         const double u = *options.bezier.construction;
-        if (!domain.contains(u))
-          return Error{fmt::format("--construction {} is outside the domain [{}, {}] of {}", u, domain.lower,
-                                   domain.upper, name)};
+        if (auto ok = check_construction_domain(u, domain_of(source.models[m]), name); !ok) return ok.error();
         construction = std::pair<int, double>{0, u};
         if (const auto* piecewise = std::get_if<PiecewiseBezierCurve>(&source.models[m]))
           construction = locate(*piecewise, u);
+        const int degree = pieces[static_cast<std::size_t>(construction->first)].degree();
+        if (auto ok = check_construction_degree(degree, name); !ok) return ok.error();
       }
       const Color color = curve_count == 1 ? colors::black : cycle_color(color_index++);
       const std::string label = curve_count == 1 ? "" : name;
@@ -347,10 +351,7 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
         if (!first_degree) first_degree = plane->degree();
         BezierPlotOptions piece_options = options.bezier;
         piece_options.construction.reset();
-        if (construction && construction->first == static_cast<int>(i)) {
-          if (auto ok = check_construction_degree(plane->degree(), name); !ok) return ok.error();
-          piece_options.construction = construction->second;
-        }
+        if (construction && construction->first == static_cast<int>(i)) piece_options.construction = construction->second;
         if (pieces.size() > 1 && options.bezier.end_tangents) piece_options.end_tangents = false;
         add_bezier(panel, *plane, piece_options, color, i == 0 ? label : "");
         if (pieces.size() > 1 && options.bezier.end_tangents && (i == 0 || i + 1 == pieces.size())) {
