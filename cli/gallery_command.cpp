@@ -21,11 +21,11 @@ struct GalleryOptions {
 int run_gallery(const GalleryOptions& options) {
   const std::filesystem::path examples =
       options.examples.empty() ? render::default_examples_dir() : std::filesystem::path(options.examples);
-  Expected<std::vector<render::GalleryFigure>> figures = Error{""};
-  {  // the progress line is erased before any message
+  // The progress line is erased (the reporter destroyed) before any message.
+  auto figures = [&] {
     TerminalProgress progress("gallery");
-    figures = render::write_gallery(options.directory, examples, progress.callback());
-  }
+    return render::write_gallery(options.directory, examples, progress.callback());
+  }();
   if (!figures) return fail(figures.error());
   return write_standard_output(
       fmt::format("wrote {} figures (SVG and PNG) and index.html to {}\n", figures->size(), options.directory));
