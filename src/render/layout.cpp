@@ -83,16 +83,16 @@ double curve_scale(const BezierCurve& curve) {
 }
 
 /// Tolerance for a curve in a panel with a logarithmic axis, where a model
-/// distance is no fixed number of pixels: one ten-thousandth of its control
-/// box, invisible at any canvas size here.
+/// distance is no fixed number of pixels: kLogAxisRelativeTolerance of its
+/// control box's diagonal.
 double log_axis_tolerance(const BezierCurve& curve) {
   const double scale = curve_scale(curve);
   const double magnitude = scale_of(curve.control_points());
-  return std::max(scale * 1e-4, std::max(magnitude, 1.0) * 1e-12);
+  return std::max(scale * tolerances::kLogAxisRelativeTolerance, std::max(magnitude, 1.0) * 1e-12);
 }
 
-/// The same for a Bernstein graph: one ten-thousandth of its height (<= 1).
-constexpr double kLogAxisGraphTolerance = 1e-4;
+/// The same for a Bernstein graph, whose height is at most 1.
+constexpr double kLogAxisGraphTolerance = tolerances::kLogAxisRelativeTolerance;
 
 /// What a curve is called in an error: its source, or its place in the panel.
 std::string curve_name(const CurveItem& c, std::size_t index) {

@@ -381,6 +381,12 @@ inline constexpr double kShadedSurfaceRelativeTolerance = 2e-3;
 /// on screen: below what anti-aliasing can show, so curves look smooth.
 inline constexpr double kCurveTolerancePixels = 0.25;
 
+/// Flattening tolerance of a curve in a panel with a logarithmic axis,
+/// where a model distance is no fixed number of pixels, relative to the
+/// curve's control box (a Bernstein graph's: to its height, at most 1): one
+/// ten-thousandth, invisible at any canvas size a figure has. Dimensionless.
+inline constexpr double kLogAxisRelativeTolerance = 1e-4;
+
 /// Largest Bernstein degree plotted (n + 1 curves of degree n in one figure;
 /// beyond this the figure is an unreadable black area and the work is wasted).
 inline constexpr int kMaxPlottedBasisDegree = 1000;
