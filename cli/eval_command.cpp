@@ -231,7 +231,7 @@ int run_eval(const EvalOptions& options) {
       }
       continue;
     }
-    const Interval domain = domain_of(model);
+    const Interval domain = curve_view(model).domain();
     for (const double u : curve.at) {
       if (!domain.contains(u)) {
         return fail(fmt::format("--at {} is outside the domain {} of {}", u, domain_text(domain),
@@ -256,7 +256,8 @@ int run_eval(const EvalOptions& options) {
       evaluate_surface(surface_view(model), surface, samples, out);
       continue;
     }
-    const Interval domain = domain_of(model);
+    const CurveView view = curve_view(model);
+    const Interval domain = view.domain();
     us.clear();
     us.insert(us.end(), curve.at.begin(), curve.at.end());
     us.insert(us.end(), curve.params.values.begin(), curve.params.values.end());
@@ -268,14 +269,7 @@ int run_eval(const EvalOptions& options) {
       const std::size_t count = std::min(kBlock, us.size() - start);
       block.resize(count * d);
       const std::span<const double> chunk(us.data() + start, count);
-      if (curve.derivative == 0) {
-        points_at(model, chunk, block);
-      } else {
-        for (std::size_t i = 0; i < count; ++i) {
-          const Point value = derivative_at(model, chunk[i], curve.derivative);
-          std::copy(value.begin(), value.end(), block.begin() + static_cast<std::ptrdiff_t>(i * d));
-        }
-      }
+      derivatives_at(view, chunk, curve.derivative, block);  // order 0: the points
       append_points_csv(out, block, static_cast<int>(d));
     }
   }

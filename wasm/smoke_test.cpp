@@ -37,7 +37,7 @@ int main() {
   std::vector<double> ts{0.0, 0.25, 0.5, 0.75, 1.0}, out(10);
   points_at(curve, ts, out);
   check(out[4] == 2.25 && out[5] == 1.5, "batch evaluation agrees with point_at");
-  const auto [left, right] = split_at(curve, 0.3);
+  const auto [left, right] = split_at(curve, 0.3).value();
   check(point_at(left, 1.0) == point_at(curve, 0.3), "split point is point_at bit for bit");
   check(elevate_degree(curve, 2).degree() == 6, "degree elevation");
   check(casteljau_construction(curve, 0.5).size() == 5, "de Casteljau construction levels");

@@ -136,10 +136,8 @@ void check_degree_growth(const BezierCurve& curve, int extra, const char* what) 
   }
 }
 
-Interval piecewise_domain(const PiecewiseBezierCurve& curve) { return {0.0, static_cast<double>(curve.size())}; }
-
 void check_piecewise_parameter(const PiecewiseBezierCurve& curve, double u, bool extrapolate) {
-  check_parameter(u, piecewise_domain(curve), extrapolate, "u");
+  check_parameter(u, curve.domain(), extrapolate, "u");
 }
 
 std::vector<double> affine_translation(const py::object& offset, int dimension) {
@@ -288,28 +286,7 @@ void bind_bezier(py::module_& module) {
       "the weight, > 0): P_k = first d coordinates / w_k (The NURBS Book §4.2).");
 
   // ---- evaluation (evaluate.hpp) ----
-  module.def(
-      "point_at",
-      [](const BezierCurve& curve, double t, bool extrapolate) {
-        check_parameter(t, kUnit, extrapolate, "t");
-        return to_numpy(point_at(curve, t));
-      },
-      py::arg("curve"), py::arg("t"), py::kw_only(), py::arg("extrapolate") = false,
-      "C(t), a (d,) array, by de Casteljau's algorithm (seed 004 §3; Farin §3.1; rational curves on the "
-      "homogeneous points). t in [0, 1] unless extrapolate=True.");
 
-  module.def(
-      "points_at",
-      [](const BezierCurve& curve, const py::object& ts, const py::object& out, bool extrapolate) {
-        return evaluate_batch(parameters_from(ts, "ts"), static_cast<std::size_t>(curve.dimension()), out, kUnit,
-                              extrapolate, "ts", [&](std::span<const double> chunk, std::span<double> target) {
-                                points_at(curve, chunk, target);
-                              });
-      },
-      py::arg("curve"), py::arg("ts"), py::kw_only(), py::arg("out") = py::none(), py::arg("extrapolate") = false,
-      "C(t) for every t of the (k,) array ts, as a (k, d) array: the batch de Casteljau kernel (bit for bit "
-      "point_at), no copy of a float64 ts, the GIL released. out: an optional (k, d) C-contiguous float64 array "
-      "to write into. On ValueError out may be partly written.");
 
   module.def(
       "point_at_bernstein_sum",
@@ -322,113 +299,10 @@ void bind_bezier(py::module_& module) {
       "(overflows to inf/NaN near degree 1030: kept to show where it breaks).");
 
   module.def(
-      "derivative_at",
-      [](const BezierCurve& curve, double t, int order, bool extrapolate) {
-        check_derivative_order(order, 0, "derivative order");
-        check_parameter(t, kUnit, extrapolate, "t");
-        return to_numpy(derivative_at(curve, t, order));
-      },
-      py::arg("curve"), py::arg("t"), py::arg("order") = 1, py::kw_only(), py::arg("extrapolate") = false,
-      "C^(k)(t), a (d,) array: de Casteljau on the k-th hodograph, rational curves by The NURBS Book eq. 4.8 / "
-      "A4.2. Zero for k > n (polynomial).");
-
-  const auto bezier_derivatives_at_one = [](const BezierCurve& curve, double t, int max_order, bool extrapolate) {
-    check_derivative_order(max_order, 0, "derivative order");
-    check_parameter(t, kUnit, extrapolate, "t");
-    const std::vector<Point> values = derivatives_at(curve, t, max_order);
-    DoubleArray result({static_cast<py::ssize_t>(values.size()), static_cast<py::ssize_t>(curve.dimension())});
-    for (std::size_t k = 0; k < values.size(); ++k) {
-      std::copy(values[k].begin(), values[k].end(), result.mutable_data() + k * values[k].size());
-    }
-    return result;
-  };
-
-  module.def("derivatives_at", bezier_derivatives_at_one, py::arg("curve"), py::arg("t"), py::arg("max_order"),
-             py::kw_only(), py::arg("extrapolate") = false,
-             "C(t), C'(t), ..., C^(max_order)(t) at one parameter, as a (max_order+1, d) array (The NURBS Book "
-             "A4.2 for rational curves).");
-
-  module.def(
-      "derivatives_at",
-      [bezier_derivatives_at_one](const BezierCurve& curve, const py::object& ts, int order, const py::object& out,
-                                  bool extrapolate) {
-        const DoubleArray parameters = as_double_array(ts, "ts");
-        // An integer or 0-d t lands here (the float overload needs a float): the single-parameter meaning.
-        if (parameters.ndim() == 0 && out.is_none()) {
-          return bezier_derivatives_at_one(curve, parameters.data()[0], order, extrapolate);
-        }
-        check_derivative_order(order, 0, "derivative order");
-        const DoubleArray checked = parameters_from(parameters, "ts");
-        const std::size_t d = static_cast<std::size_t>(curve.dimension());
-        if (!curve.is_rational()) {
-          // The k-th hodograph once, then the batch kernel on it.
-          const BezierCurve derivative = unwrap(hodograph(curve, order));
-          return evaluate_batch(checked, d, out, kUnit, extrapolate, "ts",
-                                [&](std::span<const double> chunk, std::span<double> target) {
-                                  points_at(derivative, chunk, target);
-                                });
-        }
-        return evaluate_batch(checked, d, out, kUnit, extrapolate, "ts",
-                              [&](std::span<const double> chunk, std::span<double> target) {
-                                for (std::size_t i = 0; i < chunk.size(); ++i) {
-                                  const Point value = derivative_at(curve, chunk[i], order);
-                                  std::copy(value.begin(), value.end(), target.data() + i * d);
-                                }
-                              });
-      },
-      py::arg("curve"), py::arg("ts"), py::arg("order"), py::kw_only(), py::arg("out") = py::none(),
-      py::arg("extrapolate") = false,
-      "C^(order)(t) for every t of the (k,) array ts, as a (k, d) array (polynomial curves: the batch kernel on "
-      "the hodograph, Farin §4.3; rational: A4.2 per parameter), the GIL released.");
-
-  module.def(
-      "hodograph", [](const BezierCurve& curve, int order) { return unwrap(hodograph(curve, order)); },
+      "derivative_curve", [](const BezierCurve& curve, int order) { return unwrap(derivative_curve(curve, order)); },
       py::arg("curve"), py::arg("order") = 1,
-      "The k-th hodograph, the Bézier curve of degree n-k with control points n!/(n-k)! Delta^k P_i (Farin §4.3); "
-      "the zero curve for k > n. ValueError for a rational curve or a negative order.");
-
-  module.def(
-      "unit_tangent_at",
-      [](const BezierCurve& curve, double t, bool extrapolate) {
-        check_parameter(t, kUnit, extrapolate, "t");
-        return to_numpy(unit_tangent_at(curve, t));
-      },
-      py::arg("curve"), py::arg("t"), py::kw_only(), py::arg("extrapolate") = false,
-      "C'(t)/|C'(t)|, a (d,) array; where C' vanishes the direction of the first non-vanishing derivative (the "
-      "one-sided limit), zero for a single point (evaluate.hpp).");
-
-  module.def(
-      "unit_normal_at",
-      [](const BezierCurve& curve, double t, bool extrapolate) {
-        check_parameter(t, kUnit, extrapolate, "t");
-        return to_numpy(unit_normal_at(curve, t));
-      },
-      py::arg("curve"), py::arg("t"), py::kw_only(), py::arg("extrapolate") = false,
-      "The unit principal normal (toward the centre of curvature), a (d,) array; where the curvature is zero the "
-      "left normal in the plane, else zero (evaluate.hpp).");
-
-  module.def(
-      "curvature_at",
-      [](const BezierCurve& curve, double t, bool extrapolate) {
-        check_parameter(t, kUnit, extrapolate, "t");
-        return curvature_at(curve, t);
-      },
-      py::arg("curve"), py::arg("t"), py::kw_only(), py::arg("extrapolate") = false,
-      "kappa = sqrt(|C'|^2 |C''|^2 - (C'.C'')^2) / |C'|^3 in any dimension (unsigned; +inf at a cusp, 0 where "
-      "C' and C'' vanish).");
-
-  module.def(
-      "signed_curvature_at",
-      [](const BezierCurve& curve, double t, bool extrapolate) {
-        if (curve.dimension() != 2) {
-          throw py::value_error(
-              fmt::format("signed curvature needs a plane curve, this one lives in R^{}", curve.dimension()));
-        }
-        check_parameter(t, kUnit, extrapolate, "t");
-        return signed_curvature_at(curve, t);
-      },
-      py::arg("curve"), py::arg("t"), py::kw_only(), py::arg("extrapolate") = false,
-      "(C' x C'') / |C'|^3 of a plane curve, positive when it turns left. ValueError unless d == 2.");
+      "The k-th derivative curve (the hodograph), the Bézier curve of degree n-k with control points n!/(n-k)! "
+      "Delta^k P_i (Farin §4.3); the zero curve for k > n. ValueError for a rational curve or a negative order.");
 
   // ---- the de Casteljau construction (construction.hpp) ----
   module.def(
@@ -447,34 +321,39 @@ void bind_bezier(py::module_& module) {
   module.def(
       "split_at",
       [](const BezierCurve& curve, double t, bool extrapolate) {
-        check_parameter(t, kUnit, extrapolate, "t");
-        const bool outside = !kUnit.contains(t);
-        if (outside && curve.is_rational()) {
-          const auto [left, right] = split_at(weight_curve(curve), t);
-          check_positive_weights(left, "split_at");
-          check_positive_weights(right, "split_at");
+        if (!extrapolate || kUnit.contains(t)) {
+          auto [left, right] = unwrap(split_at(curve, t));
+          return py::make_tuple(std::move(left), std::move(right));
         }
-        auto [left, right] = split_at(curve, t);
-        if (outside) return py::make_tuple(revalidated(left, "split_at"), revalidated(right, "split_at"));
-        return py::make_tuple(std::move(left), std::move(right));
+        check_parameter(t, kUnit, extrapolate, "t");
+        if (curve.is_rational()) {
+          check_positive_weights(extended_segment(weight_curve(curve), 0.0, t), "split_at");
+          check_positive_weights(extended_segment(weight_curve(curve), t, 1.0), "split_at");
+        }
+        return py::make_tuple(revalidated(extended_segment(curve, 0.0, t), "split_at"),
+                              revalidated(extended_segment(curve, t, 1.0), "split_at"));
       },
       py::arg("curve"), py::arg("t"), py::kw_only(), py::arg("extrapolate") = false,
       "(left, right): C on [0, t] and on [t, 1], each reparameterized to [0, 1], from the sides of the de "
-      "Casteljau triangle (Farin §3.2); a tuple where C++ returns a pair. t in [0, 1] unless extrapolate=True.");
+      "Casteljau triangle (Farin §3.2); a tuple where C++ returns a pair. t strictly inside (0, 1), as for every "
+      "curve kind; with extrapolate=True any finite t outside [0, 1] too (blossoming: extended_segment).");
 
   module.def(
       "segment",
       [](const BezierCurve& curve, double t0, double t1, bool extrapolate) {
+        if (!extrapolate) return unwrap(segment(curve, t0, t1));
         check_parameter(t0, kUnit, extrapolate, "t0");
         check_parameter(t1, kUnit, extrapolate, "t1");
         const bool outside = !kUnit.contains(t0) || !kUnit.contains(t1);
-        if (outside && curve.is_rational()) check_positive_weights(segment(weight_curve(curve), t0, t1), "segment");
-        BezierCurve piece = segment(curve, t0, t1);
+        if (outside && curve.is_rational())
+          check_positive_weights(extended_segment(weight_curve(curve), t0, t1), "segment");
+        BezierCurve piece = extended_segment(curve, t0, t1);
         return outside ? revalidated(piece, "segment") : piece;
       },
       py::arg("curve"), py::arg("t0"), py::arg("t1"), py::kw_only(), py::arg("extrapolate") = false,
-      "C restricted to [t0, t1] and reparameterized to [0, 1] (blossoming, Farin §3.4; t0 > t1 gives the "
-      "reversed piece). t0, t1 in [0, 1] unless extrapolate=True.");
+      "C restricted to [t0, t1] and reparameterized to [0, 1] (blossoming, Farin §3.4): 0 <= t0 < t1 <= 1, as for "
+      "every curve kind; with extrapolate=True any finite t0, t1 (t0 > t1 gives the reversed piece: "
+      "extended_segment).");
 
   module.def(
       "reversed", [](const BezierCurve& curve) { return reversed(curve); }, py::arg("curve"),
@@ -692,37 +571,7 @@ void bind_bezier(py::module_& module) {
       py::arg("curve"), py::arg("u"), py::kw_only(), py::arg("extrapolate") = false,
       "(piece, local t) of u in [0, m]: piece floor(u) (the last one for u = m), t = u - piece.");
 
-  module.def(
-      "point_at",
-      [](const PiecewiseBezierCurve& curve, double u, bool extrapolate) {
-        check_piecewise_parameter(curve, u, extrapolate);
-        return to_numpy(point_at(curve, u));
-      },
-      py::arg("curve"), py::arg("u"), py::kw_only(), py::arg("extrapolate") = false,
-      "C(u), a (d,) array, by de Casteljau on the piece that holds u (u in [0, m] unless extrapolate=True).");
 
-  module.def(
-      "derivative_at",
-      [](const PiecewiseBezierCurve& curve, double u, int order, bool extrapolate) {
-        check_derivative_order(order, 0, "derivative order");
-        check_piecewise_parameter(curve, u, extrapolate);
-        return to_numpy(derivative_at(curve, u, order));
-      },
-      py::arg("curve"), py::arg("u"), py::arg("order") = 1, py::kw_only(), py::arg("extrapolate") = false,
-      "The k-th derivative with respect to the global u (= the local t), of the piece that holds u.");
-
-  module.def(
-      "points_at",
-      [](const PiecewiseBezierCurve& curve, const py::object& us, const py::object& out, bool extrapolate) {
-        return evaluate_batch(parameters_from(us, "us"), static_cast<std::size_t>(curve.dimension()), out,
-                              piecewise_domain(curve), extrapolate, "us",
-                              [&](std::span<const double> chunk, std::span<double> target) {
-                                points_at(curve, chunk, target);
-                              });
-      },
-      py::arg("curve"), py::arg("us"), py::kw_only(), py::arg("out") = py::none(), py::arg("extrapolate") = false,
-      "C(u) for every u of the (k,) array us, as a (k, d) array (the batch kernel per piece, the GIL released). "
-      "out: an optional (k, d) C-contiguous float64 array to write into.");
 }
 
 }  // namespace casteljau::python

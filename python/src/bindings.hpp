@@ -11,6 +11,7 @@ void bind_core(pybind11::module_& module);           // core.cpp: Interval, tole
 void bind_bezier(pybind11::module_& module);         // bezier.cpp
 void bind_bspline_curve(pybind11::module_& module);  // bspline_curve.cpp: the class and its evaluation
 void bind_bspline(pybind11::module_& module);        // bspline.cpp: basis, knots, exact algorithms
+void bind_curves(pybind11::module_& module);         // curves.cpp: what every curve kind offers (the concept)
 void bind_nurbs(pybind11::module_& module);          // nurbs.cpp: conics
 void bind_interpolation(pybind11::module_& module);  // interpolation.cpp
 void bind_surfaces(pybind11::module_& module);       // surfaces.cpp

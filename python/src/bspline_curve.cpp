@@ -61,99 +61,10 @@ void bind_bspline_curve(py::module_& module) {
                                              values_from(state[3], "weights")));
           }));
 
-  module.def(
-      "point_at",
-      [](const BSplineCurve& curve, double u, bool extrapolate) {
-        check_parameter(u, curve.domain(), extrapolate, "u");
-        return to_numpy(point_at(curve, u));
-      },
-      py::arg("curve"), py::arg("u"), py::kw_only(), py::arg("extrapolate") = false,
-      "C(u), a (d,) array, by de Boor's algorithm (The NURBS Book eq. 5.11; NURBS by A4.1). u must lie in "
-      "curve.domain unless extrapolate=True (the end pieces continued).");
 
-  module.def(
-      "points_at",
-      [](const BSplineCurve& curve, const py::object& us, const py::object& out, bool extrapolate) {
-        // W1's path: the kernel checks each block as it loads it
-        // (points_at_within), where a separate pass cost a fifth of the speed.
-        const DoubleArray parameters = parameters_from(us, "us");
-        const std::size_t count = static_cast<std::size_t>(parameters.size());
-        const std::size_t d = static_cast<std::size_t>(curve.dimension());
-        DoubleArray result = output_array(count, d, out);
-        const std::span<const double> values(parameters.data(), count);
-        const std::span<double> target(result.mutable_data(), count * d);
-        const Interval allowed = extrapolate ? Interval{-std::numeric_limits<double>::max(),
-                                                        std::numeric_limits<double>::max()}
-                                             : curve.domain();
-        const std::size_t stop = without_gil([&] { return points_at_within(curve, values, allowed, target); });
-        if (stop < count) raise_bad_parameter(values, stop, curve.domain(), extrapolate, "us");
-        return result;
-      },
-      py::arg("curve"), py::arg("us"), py::kw_only(), py::arg("out") = py::none(), py::arg("extrapolate") = false,
-      "C(u) for every u of the (k,) array us, as a (k, d) array: the batch de Boor kernel (include/casteljau/"
-      "bspline/evaluate.hpp), no copy of a float64 us, the GIL released. out: an optional (k, d) C-contiguous "
-      "float64 array to write into (as numpy's out=). On ValueError out may be partly written.");
 
-  module.def(
-      "derivative_at",
-      [](const BSplineCurve& curve, double u, int order, bool extrapolate) {
-        check_derivative_order(order, 0, "derivative order");
-        check_parameter(u, curve.domain(), extrapolate, "u");
-        return to_numpy(derivative_at(curve, u, order));
-      },
-      py::arg("curve"), py::arg("u"), py::arg("order") = 1, py::kw_only(), py::arg("extrapolate") = false,
-      "C^(k)(u), a (d,) array (The NURBS Book §3.3 and A3.2; NURBS by A4.2). At a knot, the span to the right.");
 
-  module.def(
-      "derivatives_at",
-      [](const BSplineCurve& curve, double u, int max_order, bool extrapolate) {
-        check_derivative_order(max_order, 0, "derivative order");
-        check_parameter(u, curve.domain(), extrapolate, "u");
-        const std::vector<Point> values = derivatives_at(curve, u, max_order);
-        DoubleArray result({static_cast<py::ssize_t>(values.size()), static_cast<py::ssize_t>(curve.dimension())});
-        for (std::size_t k = 0; k < values.size(); ++k) {
-          std::copy(values[k].begin(), values[k].end(), result.mutable_data() + k * values[k].size());
-        }
-        return result;
-      },
-      py::arg("curve"), py::arg("u"), py::arg("max_order"), py::kw_only(), py::arg("extrapolate") = false,
-      "C(u), C'(u), ..., C^(max_order)(u) at one parameter, as a (max_order+1, d) array (A3.2/A4.2).");
 
-  module.def(
-      "derivatives_at",
-      // py::array, not py::object: pybind11 tries every overload without
-      // conversions first, and an int u must reach the single-point one above.
-      [](const BSplineCurve& curve, const py::array& us, int order, const py::object& out, bool extrapolate) {
-        check_derivative_order(order, 0, "derivative order");
-        return evaluate_batch(parameters_from(us, "us"), static_cast<std::size_t>(curve.dimension()), out,
-                              curve.domain(), extrapolate, "us",
-                              [&](std::span<const double> chunk, std::span<double> target) {
-                                derivatives_at(curve, chunk, order, target);
-                              });
-      },
-      py::arg("curve"), py::arg("us"), py::arg("order"), py::kw_only(), py::arg("out") = py::none(),
-      py::arg("extrapolate") = false,
-      "C^(order)(u) for every u of the (k,) array us, as a (k, d) array (the batch kernel for order 1).");
-
-  module.def(
-      "points_and_derivatives_at",
-      [](const BSplineCurve& curve, const py::object& us, bool extrapolate) {
-        const DoubleArray parameters = parameters_from(us, "us");
-        const std::size_t d = static_cast<std::size_t>(curve.dimension());
-        const std::size_t k = static_cast<std::size_t>(parameters.shape(0));
-        DoubleArray points = output_array(k, d, py::none()), derivatives = output_array(k, d, py::none());
-        double* point_target = points.mutable_data();
-        double* derivative_target = derivatives.mutable_data();
-        for_each_checked_chunk(std::span<const double>(parameters.data(), k), curve.domain(), extrapolate, "us",
-                               [&](std::span<const double> chunk, std::size_t offset) {
-                                 points_and_derivatives_at(curve, chunk,
-                                                           std::span<double>(point_target + offset * d, chunk.size() * d),
-                                                           std::span<double>(derivative_target + offset * d, chunk.size() * d));
-                               });
-        return py::make_tuple(points, derivatives);
-      },
-      py::arg("curve"), py::arg("us"), py::kw_only(), py::arg("extrapolate") = false,
-      "(C(u), C'(u)) for every u of us, two (k, d) arrays, from one de Boor triangle per parameter (W2).");
 
   module.def(
       "point_at_basis_sum",

@@ -110,13 +110,13 @@ void bind_lagrange(py::module_& module) {
       .def_property_readonly("dimension", [](const BarycentricInterpolant& b) { return b.values.dimension(); },
                              "d, the number of coordinates.")
       .def_property_readonly("domain", [](const BarycentricInterpolant& b) {
-             const Interval domain = domain_of(b);
+             const Interval domain = b.domain();
              return py::make_tuple(domain.lower, domain.upper);
-           }, "(t_0, t_n) (domain_of).")
+           }, "(t_0, t_n) (BarycentricInterpolant::domain()).")
       .def("__eq__", [](const BarycentricInterpolant& a, const BarycentricInterpolant& b) { return a == b; },
            py::is_operator())
       .def("__repr__", [](const BarycentricInterpolant& b) {
-        const Interval domain = domain_of(b);
+        const Interval domain = b.domain();
         return fmt::format("BarycentricInterpolant(degree={}, {} nodes in [{}, {}], values in R^{})", b.nodes.size() - 1,
                            b.nodes.size(), domain.lower, domain.upper, b.values.dimension());
       })
@@ -155,7 +155,7 @@ void bind_lagrange(py::module_& module) {
   module.def(
       "domain_of",
       [](const BarycentricInterpolant& interpolant) {
-        const Interval domain = domain_of(interpolant);
+        const Interval domain = interpolant.domain();
         return py::make_tuple(domain.lower, domain.upper);
       },
       py::arg("interpolant"), "(t_0, t_n), the interval the interpolant was built on (a tuple).");
@@ -164,7 +164,7 @@ void bind_lagrange(py::module_& module) {
       "point_at",
       [](const BarycentricInterpolant& interpolant, double t, bool extrapolate) {
         const double one[1] = {t};
-        for_each_checked_chunk(std::span<const double>(one), domain_of(interpolant), extrapolate, "t",
+        for_each_checked_chunk(std::span<const double>(one), interpolant.domain(), extrapolate, "t",
                                [](std::span<const double>, std::size_t) {});
         const Point point = point_at(interpolant, t);
         return to_numpy(std::span<const double>(point));
@@ -177,7 +177,7 @@ void bind_lagrange(py::module_& module) {
       "points_at",
       [](const BarycentricInterpolant& interpolant, const py::object& ts, const py::object& out, bool extrapolate) {
         return evaluate_batch(parameters_from(ts, "ts"), static_cast<std::size_t>(interpolant.values.dimension()),
-                              out, domain_of(interpolant), extrapolate, "ts",
+                              out, interpolant.domain(), extrapolate, "ts",
                               [&](std::span<const double> chunk, std::span<double> target) {
                                 points_at(interpolant, chunk, target);
                               });

@@ -180,7 +180,7 @@ void bind_io(py::module_& module) {
         if (is_surface(value)) {
           throw py::value_error("domain_of is for curves; a surface has domain_u and domain_v");
         }
-        const Interval domain = domain_of(value);
+        const Interval domain = curve_view(value).domain();
         return py::make_tuple(domain.lower, domain.upper);
       },
       py::arg("model"),

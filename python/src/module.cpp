@@ -11,6 +11,7 @@ PYBIND11_MODULE(_casteljau, module) {
   bind_bezier(module);
   bind_bspline_curve(module);
   bind_bspline(module);
+  bind_curves(module);
   bind_nurbs(module);
   bind_interpolation(module);
   bind_surfaces(module);

@@ -19,6 +19,7 @@
 #include "bindings.hpp"
 #include "casteljau/bezier/bezier_curve.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/curves/curve_view.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/tessellate.hpp"
@@ -137,6 +138,30 @@ void check_unit_parameter(double t, const char* what) {
   }
 }
 
+/// flatten's result, computed without the GIL, as (points, parameters).
+template <class Compute>
+py::tuple polyline_tuple(Compute&& compute) {
+  Expected<Polyline> line = Error{};
+  {
+    py::gil_scoped_release release;
+    line = compute();
+  }
+  Polyline polyline = unwrap(std::move(line));
+  return py::make_tuple(to_numpy(polyline.points), to_numpy(std::span<const double>(polyline.parameters)));
+}
+
+template <class T>
+struct KindTag {
+  using type = T;
+};
+
+/// f(KindTag<Kind>{}) for the curve kinds other than BezierCurve.
+template <class F>
+void for_other_curve_kinds(F&& f) {
+  f(KindTag<PiecewiseBezierCurve>{});
+  f(KindTag<BSplineCurve>{});
+}
+
 }  // namespace
 
 void bind_ops(py::module_& module) {
@@ -153,19 +178,27 @@ void bind_ops(py::module_& module) {
                                               tolerances::kMaxFlattenSegments));
           }
         }
-        Expected<Polyline> line = Error{};
-        {
-          py::gil_scoped_release release;
-          line = flatten(curve, checked, cap);
-        }
-        Polyline polyline = unwrap(std::move(line));
-        return py::make_tuple(to_numpy(polyline.points), to_numpy(std::span<const double>(polyline.parameters)));
+        return polyline_tuple([&] { return flatten(curve, checked, cap); });
       },
       py::arg("curve"), py::arg("tolerance"), py::arg("max_segments") = py::none(),
       "A polyline through points of the Bézier curve within `tolerance` of it (Hausdorff distance, certified "
       "by chord_deviation_bound; docs/flattening.md), as a tuple (points (m+1, d), parameters (m+1,)) with "
       "parameters 0 = t_0 < ... < t_m = 1 (the C++ returns a Polyline). max_segments: an optional cap (ValueError, "
       "not a truncated polyline, when more are needed). The GIL is released.");
+
+  // Every other curve kind: its Bézier pieces flattened and joined (flatten on CurveView).
+  for_other_curve_kinds([&module](auto kind) {
+    using Kind = typename decltype(kind)::type;
+    module.def(
+        "flatten",
+        [](const Kind& curve, double tolerance) {
+          const Tolerance checked = tolerance_from(tolerance, "tolerance");
+          return polyline_tuple([&] { return flatten(CurveView(curve), checked); });
+        },
+        py::arg("curve"), py::arg("tolerance"),
+        "A polyline within `tolerance` of the curve: its Bézier pieces flattened as above and joined, as (points "
+        "(m+1, d), parameters (m+1,)) on the curve's own parameters (ops/flatten.hpp).");
+  });
 
   module.def(
       "flatten_segment_count",

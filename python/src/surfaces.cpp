@@ -338,10 +338,10 @@ DoubleArray derivative_table_array(const std::vector<std::vector<Point>>& table,
 }
 
 std::vector<std::vector<Point>> derivatives_table(const BSplineSurface& surface, double u, double v, int max_order) {
-  return partial_derivatives_at(surface, u, v, max_order);
+  return partial_derivatives_up_to(surface, u, v, max_order);
 }
 std::vector<std::vector<Point>> derivatives_table(const BezierSurface& surface, double u, double v, int max_order) {
-  return partial_derivatives_at(to_bspline_surface(surface), u, v, max_order);
+  return partial_derivatives_up_to(to_bspline_surface(surface), u, v, max_order);
 }
 std::vector<std::vector<Point>> derivatives_table(const CoonsPatch& patch, double u, double v, int max_order) {
   std::vector<std::vector<Point>> table(static_cast<std::size_t>(max_order) + 1);
@@ -452,7 +452,7 @@ void bind_evaluation(py::module_& module, const char* kind) {
           .c_str());
 
   module.def(
-      "partial_derivatives_at",
+      "partial_derivatives_up_to",
       [](const Surface& surface, double u, double v, int max_order, bool extrapolate) {
         if (max_order < 0 || max_order > tolerances::kMaxSurfaceDerivativeOrder) {
           throw py::value_error(fmt::format("max_order {} is outside 0..{} (the limit for a surface)", max_order,

@@ -61,14 +61,20 @@ Point transformed_point(const AffineMap& map, std::span<const double> x) {
   return y;
 }
 
-Expected<BezierCurve> transformed(const BezierCurve& curve, const AffineMap& map) {
-  if (map.dimension != curve.dimension())
+Expected<PointArray> transformed_points(const AffineMap& map, const PointArray& points) {
+  if (map.dimension != points.dimension())
     return Error{"the affine map acts on R^" + std::to_string(map.dimension) + ", the curve lives in R^" +
-                 std::to_string(curve.dimension())};
-  PointArray points = PointArray::zeros(curve.dimension(), 0);
-  for (std::size_t i = 0; i < curve.control_points().size(); ++i) points.push_back(transformed_point(map, curve.control_points()[i]));
+                 std::to_string(points.dimension())};
+  PointArray result = PointArray::zeros(points.dimension(), 0);
+  for (std::size_t i = 0; i < points.size(); ++i) result.push_back(transformed_point(map, points[i]));
+  return result;
+}
+
+Expected<BezierCurve> transformed(const BezierCurve& curve, const AffineMap& map) {
+  auto points = transformed_points(map, curve.control_points());
+  if (!points) return points.error();
   std::vector<double> weights(curve.weights().begin(), curve.weights().end());
-  return BezierCurve::make(std::move(points), std::move(weights));
+  return BezierCurve::make(std::move(*points), std::move(weights));
 }
 
 }  // namespace casteljau

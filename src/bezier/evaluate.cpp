@@ -54,16 +54,6 @@ void polynomial_derivative(const BezierCurve& curve, double t, int k, std::span<
   for (int j = 0; j < width; ++j) out[j] = f * rows[j];
 }
 
-/// Euclidean norm of a span, overflow-safe.
-double span_norm(std::span<const double> v) {
-  double largest = 0.0;
-  for (double c : v) largest = std::max(largest, std::abs(c));
-  if (largest == 0.0 || !std::isfinite(largest)) return largest;
-  double sum = 0.0;
-  for (double c : v) sum += (c / largest) * (c / largest);
-  return largest * std::sqrt(sum);
-}
-
 }  // namespace
 
 Point point_at(const BezierCurve& curve, double t) {
@@ -95,7 +85,45 @@ Point point_at_bernstein_sum(const BezierCurve& curve, double t) {
   return sum;
 }
 
-std::vector<Point> derivatives_at(const BezierCurve& curve, double t, int max_order) {
+namespace {
+
+/// C^(0..k)(t) of a rational curve into result ((k+1) rows of d), with
+/// `homogeneous` ((k+1) rows of d+1) as scratch: the homogeneous derivatives
+/// A^(j), w^(j), then C^(j) = (A^(j) - sum_{i=1..j} C(j,i) w^(i) C^(j-i)) / w
+/// (The NURBS Book A4.2).
+void rational_derivatives(const BezierCurve& curve, double t, int max_order, std::span<double> homogeneous,
+                          std::span<double> result) {
+  const int d = curve.dimension(), width = d + 1;
+  for (int k = 0; k <= max_order; ++k) polynomial_derivative(curve, t, k, homogeneous.subspan(k * width), width);
+  const double w = homogeneous[d];
+  for (int k = 0; k <= max_order; ++k) {
+    double* c = result.data() + k * d;
+    for (int i = 0; i < d; ++i) c[i] = homogeneous[k * width + i];
+    for (int j = 1; j <= k; ++j) {
+      const double f = binomial(k, j) * homogeneous[j * width + d];
+      for (int i = 0; i < d; ++i) c[i] -= f * result[(k - j) * d + i];
+    }
+    for (int i = 0; i < d; ++i) c[i] /= w;
+  }
+}
+
+/// The k-th derivative at t into out (d values), no heap up to kMaxStackDegree.
+void derivative_into(const BezierCurve& curve, double t, int order, std::span<double> out) {
+  const int d = curve.dimension();
+  if (!curve.is_rational()) {
+    polynomial_derivative(curve, t, order, out, d);
+    return;
+  }
+  detail::Workspace<> work;
+  const std::span<double> rows = work.take(static_cast<std::size_t>(order + 1) * (2 * d + 1));
+  const std::span<double> result = rows.subspan(static_cast<std::size_t>(order + 1) * (d + 1));
+  rational_derivatives(curve, t, order, rows, result);
+  std::copy(result.begin() + order * d, result.begin() + (order + 1) * d, out.begin());
+}
+
+}  // namespace
+
+std::vector<Point> derivatives_up_to(const BezierCurve& curve, double t, int max_order) {
   assert(max_order >= 0);
   const int d = curve.dimension();
   std::vector<Point> result;
@@ -108,24 +136,10 @@ std::vector<Point> derivatives_at(const BezierCurve& curve, double t, int max_or
     }
     return result;
   }
-  // Rational: homogeneous derivatives A^(k) (first d) and w^(k) (last), then
-  // C^(k) = (A^(k) - sum_{j=1..k} C(k,j) w^(j) C^(k-j)) / w  (NURBS Book A4.2).
-  std::vector<Point> homogeneous;
-  for (int k = 0; k <= max_order; ++k) {
-    Point h(d + 1);
-    polynomial_derivative(curve, t, k, h, d + 1);
-    homogeneous.push_back(std::move(h));
-  }
-  const double w = homogeneous[0][d];
-  for (int k = 0; k <= max_order; ++k) {
-    Point c(homogeneous[k].begin(), homogeneous[k].begin() + d);
-    for (int j = 1; j <= k; ++j) {
-      const double f = binomial(k, j) * homogeneous[j][d];
-      for (int i = 0; i < d; ++i) c[i] -= f * result[k - j][i];
-    }
-    for (double& v : c) v /= w;
-    result.push_back(std::move(c));
-  }
+  std::vector<double> homogeneous(static_cast<std::size_t>(max_order + 1) * (d + 1));
+  std::vector<double> flat(static_cast<std::size_t>(max_order + 1) * d);
+  rational_derivatives(curve, t, max_order, homogeneous, flat);
+  for (int k = 0; k <= max_order; ++k) result.emplace_back(flat.begin() + k * d, flat.begin() + (k + 1) * d);
   return result;
 }
 
@@ -136,11 +150,37 @@ Point derivative_at(const BezierCurve& curve, double t, int order) {
     polynomial_derivative(curve, t, order, p, curve.dimension());
     return p;
   }
-  return std::move(derivatives_at(curve, t, order).back());
+  Point p(curve.dimension());
+  derivative_into(curve, t, order, p);
+  return p;
 }
 
-Expected<BezierCurve> hodograph(const BezierCurve& curve, int order) {
-  if (curve.is_rational()) return Error{"the hodograph of a rational Bézier curve is not a Bézier curve of that form; use derivative_at"};
+void derivatives_at(const BezierCurve& curve, std::span<const double> ts, int order, std::span<double> out) {
+  const std::size_t d = static_cast<std::size_t>(curve.dimension());
+  assert(order >= 0 && out.size() == ts.size() * d);
+  if (order == 0) {
+    points_at(curve, ts, out);
+    return;
+  }
+  if (!curve.is_rational()) {
+    // The k-th derivative curve once, then the batch kernel on it.
+    points_at(derivative_curve(curve, order).value(), ts, out);
+    return;
+  }
+  for (std::size_t i = 0; i < ts.size(); ++i) derivative_into(curve, ts[i], order, out.subspan(i * d, d));
+}
+
+void points_and_derivatives_at(const BezierCurve& curve, std::span<const double> ts, std::span<double> points,
+                               std::span<double> derivatives) {
+  points_at(curve, ts, points);
+  derivatives_at(curve, ts, 1, derivatives);
+}
+
+std::vector<double> breakpoints(const BezierCurve&) { return {0.0, 1.0}; }
+
+Expected<BezierCurve> derivative_curve(const BezierCurve& curve, int order) {
+  if (curve.is_rational())
+    return Error{"the derivative of a rational Bézier curve is not a Bézier curve of that form; use derivative_at"};
   if (order < 0) return Error{"derivative order " + std::to_string(order) + " is negative"};
   const int n = curve.degree(), d = curve.dimension();
   if (order > n) return BezierCurve::from_trusted(PointArray::zeros(d, 1));
@@ -152,75 +192,6 @@ Expected<BezierCurve> hodograph(const BezierCurve& curve, int order) {
   const double f = falling_factorial(n, order);
   for (double& c : rows) c *= f;
   return BezierCurve::from_trusted(PointArray::from_trusted(d, std::move(rows)));
-}
-
-Point unit_tangent_at(const BezierCurve& curve, double t) {
-  const int n = curve.degree(), d = curve.dimension();
-  const double scale = scale_of(curve.control_points());
-  for (int k = 1; k <= std::max(n, 1) && scale > 0.0; ++k) {
-    Point v = derivative_at(curve, t, k);
-    const double length = span_norm(v);
-    if (length > tolerances::kVanishingDerivative * scale) {
-      // C'(t + h) ~ h^(k-1)/(k-1)! C^(k)(t): from the right the sign is +, from the
-      // left (-1)^(k-1). We take the limit from inside the domain.
-      const double sign = (t >= 1.0 && k % 2 == 0) ? -1.0 : 1.0;
-      for (double& c : v) c *= sign / length;
-      return v;
-    }
-    if (curve.is_rational() && k >= n) break;
-  }
-  return Point(d, 0.0);
-}
-
-double curvature_at(const BezierCurve& curve, double t) {
-  const auto ders = derivatives_at(curve, t, 2);
-  const Point& a = ders[1];
-  const Point& b = ders[2];
-  // |a ^ b|^2 = sum_{i<j} (a_i b_j - a_j b_i)^2: no cancellation, any dimension.
-  double wedge = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = i + 1; j < a.size(); ++j) {
-      const double m = a[i] * b[j] - a[j] * b[i];
-      wedge += m * m;
-    }
-  const double speed = span_norm(a);
-  if (speed == 0.0) return span_norm(b) == 0.0 ? 0.0 : INFINITY;
-  return std::sqrt(wedge) / (speed * speed * speed);
-}
-
-double signed_curvature_at(const BezierCurve& curve, double t) {
-  assert(curve.dimension() == 2);
-  const auto ders = derivatives_at(curve, t, 2);
-  const double speed = span_norm(ders[1]);
-  const double cross = ders[1][0] * ders[2][1] - ders[1][1] * ders[2][0];
-  if (speed == 0.0) return cross == 0.0 ? 0.0 : std::copysign(INFINITY, cross);
-  return cross / (speed * speed * speed);
-}
-
-Point unit_normal_at(const BezierCurve& curve, double t) {
-  const int d = curve.dimension();
-  Point normal(d, 0.0);
-  if (d < 2) return normal;
-  const Point tangent = unit_tangent_at(curve, t);
-  const Point second = derivative_at(curve, t, 2);
-  const double along = [&] {
-    double s = 0.0;
-    for (int i = 0; i < d; ++i) s += second[i] * tangent[i];
-    return s;
-  }();
-  for (int i = 0; i < d; ++i) normal[i] = second[i] - along * tangent[i];
-  const double length = span_norm(normal);
-  const double scale = scale_of(curve.control_points());
-  if (length > tolerances::kVanishingDerivative * scale && scale > 0.0) {
-    for (double& c : normal) c /= length;
-    return normal;
-  }
-  std::fill(normal.begin(), normal.end(), 0.0);
-  if (d == 2) {
-    normal[0] = -tangent[1];
-    normal[1] = tangent[0];
-  }
-  return normal;
 }
 
 }  // namespace casteljau

@@ -34,6 +34,7 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "../core/workspace.hpp"
+#include "checked_batch.hpp"
 #include "de_casteljau.hpp"
 #include "simd_lanes.hpp"
 
@@ -210,6 +211,15 @@ void points_at(const BezierCurve& curve, std::span<const double> ts, std::span<d
     general_block(rows, n, width, rational, t, work, c, p);
     std::copy(p, p + rest * d, out.data() + full * d);
   }
+}
+
+std::size_t points_at_within(const BezierCurve& curve, std::span<const double> ts, Interval allowed,
+                             std::span<double> out) {
+  assert(out.size() == ts.size() * static_cast<std::size_t>(curve.dimension()));
+  return detail::evaluate_within(ts, allowed, static_cast<std::size_t>(curve.dimension()), out,
+                                 [&](std::span<const double> block, std::span<double> rows) {
+                                   if (!block.empty()) points_at(curve, block, rows);
+                                 });
 }
 
 }  // namespace casteljau

@@ -5,6 +5,7 @@
 #include <functional>
 #include <vector>
 
+#include "casteljau/core/parameter_checks.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "de_casteljau.hpp"
 
@@ -48,22 +49,29 @@ void split_rows(std::vector<double> rows, int n, int width, double t, std::vecto
 
 }  // namespace
 
-std::pair<BezierCurve, BezierCurve> split_at(const BezierCurve& curve, double t) {
+Expected<std::pair<BezierCurve, BezierCurve>> split_at(const BezierCurve& curve, double t) {
+  if (auto ok = check_split_parameter(t, curve.domain()); !ok) return ok.error();
   const PointArray points = working_points(curve);
   const int width = points.dimension(), n = curve.degree();
   std::vector<double> left, right;
   split_rows({points.coordinates().begin(), points.coordinates().end()}, n, width, t, left, right);
-  return {curve_from(curve, std::move(left), width), curve_from(curve, std::move(right), width)};
+  return std::pair<BezierCurve, BezierCurve>{curve_from(curve, std::move(left), width),
+                                             curve_from(curve, std::move(right), width)};
 }
 
-BezierCurve segment(const BezierCurve& curve, double t0, double t1) {
+Expected<BezierCurve> segment(const BezierCurve& curve, double t0, double t1) {
+  if (auto ok = check_segment_parameters(t0, t1, curve.domain()); !ok) return ok.error();
+  return extended_segment(curve, t0, t1);
+}
+
+BezierCurve extended_segment(const BezierCurve& curve, double t0, double t1) {
   // Two subdivisions (Farin §3.4): C on [0, t1] is the left side of the de
   // Casteljau triangle at t1; that piece on [t0 / t1, 1] (its own parameter)
   // is C on [t0, t1]. Pivoting on the end of larger magnitude keeps the ratio
   // in [-1, 1]; a rational curve stays homogeneous between the two (the
   // intermediate piece may reach weights <= 0 outside [0, 1]). O(n^2 d):
   // each blossom value b(t0^(n-i), t1^i) on its own would cost O(n^3 d).
-  if (std::abs(t0) > std::abs(t1)) return reversed(segment(curve, t1, t0));
+  if (std::abs(t0) > std::abs(t1)) return reversed(extended_segment(curve, t1, t0));
   const PointArray points = working_points(curve);
   const int width = points.dimension(), n = curve.degree();
   std::vector<double> before, after;

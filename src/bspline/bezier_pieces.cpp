@@ -38,11 +38,10 @@ BezierPieces to_bezier_pieces(const BSplineCurve& curve) {
   return out;
 }
 
+BezierPieces to_bezier_pieces(const BezierCurve& curve) { return {{0.0, 1.0}, {curve}}; }
+
 BezierPieces to_bezier_pieces(const PiecewiseBezierCurve& curve) {
-  BezierPieces out;
-  out.pieces = curve.pieces();
-  for (int i = 0; i <= curve.size(); ++i) out.breakpoints.push_back(i);
-  return out;
+  return {breakpoints(curve), curve.pieces()};
 }
 
 PiecewiseBezierCurve to_piecewise_bezier(const BezierPieces& pieces) {

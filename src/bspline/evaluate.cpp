@@ -110,7 +110,7 @@ Point point_at_basis_sum(const BSplineCurve& curve, double u) {
   return numerator;
 }
 
-std::vector<Point> derivatives_at(const BSplineCurve& curve, double u, int max_order) {
+std::vector<Point> derivatives_up_to(const BSplineCurve& curve, double u, int max_order) {
   assert(max_order >= 0);
   const int d = curve.dimension();
   const int width = row_width(curve);
@@ -156,7 +156,7 @@ Point derivative_at(const BSplineCurve& curve, double u, int order) {
   assert(order >= 0);
   if (order == 0) return point_at(curve, u);
   if (!curve.is_rational() && order > curve.degree()) return Point(static_cast<std::size_t>(curve.dimension()), 0.0);
-  return derivatives_at(curve, u, order)[static_cast<std::size_t>(order)];
+  return derivatives_up_to(curve, u, order)[static_cast<std::size_t>(order)];
 }
 
 // The batch functions (points_at, points_and_derivatives_at, derivatives_at
@@ -185,6 +185,14 @@ DeBoorNet de_boor_net(const BSplineCurve& curve, double u) {
     store_level(r);
   }
   return net;
+}
+
+std::vector<double> breakpoints(const BSplineCurve& curve) {
+  const Interval domain = curve.domain();
+  std::vector<double> result;
+  for (double knot : curve.knots())
+    if (domain.contains(knot) && (result.empty() || knot != result.back())) result.push_back(knot);
+  return result;
 }
 
 }  // namespace casteljau

@@ -8,6 +8,7 @@
 
 #include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/core/model_numbers.hpp"
+#include "casteljau/core/parameter_checks.hpp"
 #include "../core/number_text.hpp"
 #include "working_rows.hpp"
 
@@ -74,11 +75,8 @@ BSplineCurve clamped(const BSplineCurve& curve) {
 }
 
 Expected<std::pair<BSplineCurve, BSplineCurve>> split_at(const BSplineCurve& curve, double u) {
-  if (auto ok = check_finite(u, "the split parameter"); !ok) return ok.error();
   const Interval domain = curve.domain();
-  if (!(domain.lower < u && u < domain.upper))
-    return Error{"the split parameter " + number_text(u) + " is not strictly inside the domain [" +
-                 number_text(domain.lower) + ", " + number_text(domain.upper) + "]"};
+  if (auto ok = check_split_parameter(u, domain); !ok) return ok.error();
   const double cut[] = {u};
   if (auto spans = check_added_knot_spans(curve.knots(), cut, "split parameter"); !spans) return spans.error();
   // Clamp first and insert u once, so that cutting needs no further
@@ -89,6 +87,20 @@ Expected<std::pair<BSplineCurve, BSplineCurve>> split_at(const BSplineCurve& cur
   const detail::CurveRows rows = detail::refine(whole, copies);
   return std::pair<BSplineCurve, BSplineCurve>{detail::curve_of(detail::restrict_to(rows, domain.lower, u)),
                                                detail::curve_of(detail::restrict_to(rows, u, domain.upper))};
+}
+
+Expected<BSplineCurve> segment(const BSplineCurve& curve, double u0, double u1) {
+  if (auto ok = check_segment_parameters(u0, u1, curve.domain()); !ok) return ok.error();
+  const double ends[] = {u0, u1};
+  if (auto spans = check_added_knot_spans(curve.knots(), ends, "segment end"); !spans) return spans.error();
+  return detail::curve_of(detail::restrict_to(detail::rows_of(curve), u0, u1));
+}
+
+Expected<BSplineCurve> transformed(const BSplineCurve& curve, const AffineMap& map) {
+  auto points = transformed_points(map, curve.control_points());
+  if (!points) return points.error();
+  return BSplineCurve::make(curve.degree(), {curve.knots().begin(), curve.knots().end()}, std::move(*points),
+                            {curve.weights().begin(), curve.weights().end()});
 }
 
 }  // namespace casteljau

@@ -130,10 +130,6 @@ Expected<BarycentricInterpolant> interpolate_lagrange(const PointArray& points, 
   return result;
 }
 
-Interval domain_of(const BarycentricInterpolant& interpolant) {
-  return {interpolant.nodes.front(), interpolant.nodes.back()};
-}
-
 Point point_at(const BarycentricInterpolant& interpolant, double t) {
   Point point(static_cast<std::size_t>(interpolant.values.dimension()));
   evaluate(interpolant, t, point.data());
@@ -155,7 +151,7 @@ Expected<BezierCurve> to_bezier(const BarycentricInterpolant& interpolant) {
                  " (the Bernstein-Vandermonde system is too ill-conditioned); evaluate it in barycentric form"};
   const int d = interpolant.values.dimension();
   if (n == 0) return BezierCurve::from_trusted(interpolant.values);  // a constant
-  const Interval domain = domain_of(interpolant);
+  const Interval domain = interpolant.domain();
   // Sample p at the Chebyshev points s_j of [0, 1], whatever the nodes: the
   // Bernstein-Vandermonde matrix there is far better conditioned than at
   // equispaced nodes (Runge at n = 40: 6e-9 against 8e-2 relative error),

@@ -7,6 +7,7 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/curves/curve.hpp"
 
 namespace casteljau {
 namespace {
@@ -19,10 +20,9 @@ struct Overloaded : F... {
 template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
-/// True for the curve alternatives of Model.
+/// True for the curve alternatives of Model: those that meet the curve concept.
 template <class T>
-constexpr bool is_curve_type =
-    std::is_same_v<T, BezierCurve> || std::is_same_v<T, PiecewiseBezierCurve> || std::is_same_v<T, BSplineCurve>;
+constexpr bool is_curve_type = CurveKind<T>;
 
 }  // namespace
 
@@ -46,15 +46,17 @@ SurfaceView surface_view(const Model& model) {
       model);
 }
 
-Interval domain_of(const Model& model) {
+CurveView curve_view(const Model& model) {
   assert(!is_surface(model));
-  return std::visit(Overloaded{[](const BezierCurve&) { return Interval{0.0, 1.0}; },
-                               [](const PiecewiseBezierCurve& c) {
-                                 return Interval{0.0, static_cast<double>(c.size())};
-                               },
-                               [](const BSplineCurve& c) { return c.domain(); },
-                               [](const auto&) { return Interval{0.0, 1.0}; }},
-                    model);
+  return std::visit(
+      [](const auto& m) -> CurveView {
+        if constexpr (is_curve_type<std::decay_t<decltype(m)>>) {
+          return CurveView(m);
+        } else {
+          std::abort();  // unreachable by the precondition (as surface_view)
+        }
+      },
+      model);
 }
 
 int dimension_of(const Model& model) {
@@ -76,27 +78,6 @@ std::size_t control_point_count(const Model& model) {
                                         p.v0().control_points().size() + p.v1().control_points().size();
                                }},
                     model);
-}
-
-void points_at(const Model& model, std::span<const double> us, std::span<double> out) {
-  assert(!is_surface(model));
-  assert(out.size() == us.size() * static_cast<std::size_t>(dimension_of(model)));
-  std::visit(
-      [&](const auto& m) {
-        if constexpr (is_curve_type<std::decay_t<decltype(m)>>) points_at(m, us, out);
-      },
-      model);
-}
-
-Point derivative_at(const Model& model, double u, int order) {
-  assert(order >= 0);
-  assert(!is_surface(model));
-  return std::visit(
-      [&](const auto& m) -> Point {
-        if constexpr (is_curve_type<std::decay_t<decltype(m)>>) return derivative_at(m, u, order);
-        else return Point{};
-      },
-      model);
 }
 
 const char* type_name(const Model& model) {

@@ -11,6 +11,7 @@
 
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bezier/split.hpp"
+#include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/core/vec.hpp"
 #include "../bezier/de_casteljau.hpp"
 
@@ -367,7 +368,7 @@ double hull_deviation(const BezierCurve& piece, std::span<const double> v0, std:
   if (piece.degree() > kHalvedHullDegree) {
     hull(piece);
   } else {
-    const auto [left, right] = split_at(piece, 0.5);
+    const auto [left, right] = split_at(piece, 0.5).value();
     hull(left);
     hull(right);
   }
@@ -742,13 +743,13 @@ Status flatten_general(const BezierCurve& curve, double limit, long max_segments
     // shared point), and that piece split at a / b gives C on [a, b].
     auto deviation = [&](double b, double) {
       if (b == 1.0) {
-        const BezierCurve piece = a == 0.0 ? curve : split_at(curve, a).second;
+        const BezierCurve piece = a == 0.0 ? curve : split_at(curve, a).value().second;
         return hull_deviation(piece, start, last);
       }
-      const BezierCurve before = split_at(curve, b).first;
+      const BezierCurve before = split_at(curve, b).value().first;
       const auto& q = before.control_points();
       Point end(q[q.size() - 1].begin(), q[q.size() - 1].end());
-      const double bound = hull_deviation(a == 0.0 ? before : split_at(before, a / b).second, start, end);
+      const double bound = hull_deviation(a == 0.0 ? before : split_at(before, a / b).value().second, start, end);
       if (bound <= limit && b > certified_b) certified_b = b, certified_end = std::move(end);
       return bound;
     };
@@ -822,7 +823,7 @@ double chord_deviation_bound(const BezierCurve& curve, double t0, double t1) {
     cubic.start(t0);
     return cubic.deviation(t1 - t0, 0.0);
   }
-  return hull_deviation(segment(curve, t0, t1), point_at(curve, t0), point_at(curve, t1));
+  return hull_deviation(extended_segment(curve, t0, t1), point_at(curve, t0), point_at(curve, t1));
 }
 
 Expected<Polyline> flatten(const BezierCurve& curve, Tolerance tolerance) {
@@ -871,6 +872,27 @@ Expected<long> flatten_segment_count(const BezierCurve& curve, Tolerance toleran
   if (auto ok = flatten_general_into(curve, tolerance, tolerances::kMaxFlattenSegments, sink); !ok)
     return ok.error();
   return sink.vertices - 1;
+}
+
+Expected<Polyline> flatten(CurveView curve, Tolerance tolerance) {
+  const BezierPieces pieces = to_bezier_pieces(curve);
+  Polyline line{PointArray::zeros(curve.dimension(), 0), {}};
+  long budget = tolerances::kMaxFlattenSegments;
+  for (std::size_t i = 0; i < pieces.pieces.size(); ++i) {
+    if (budget < 1) return too_many_segments(tolerances::kMaxFlattenSegments);
+    auto part = flatten(pieces.pieces[i], tolerance, budget);
+    if (!part) return with_context(part.error(), "piece " + std::to_string(i));
+    const Interval span{pieces.breakpoints[i], pieces.breakpoints[i + 1]};
+    budget -= static_cast<long>(part->parameters.size()) - 1;
+    for (std::size_t j = 0; j < part->parameters.size(); ++j) {
+      const bool joint = j == 0 && !line.parameters.empty();
+      if (joint && std::equal(part->points[0].begin(), part->points[0].end(), line.points[line.points.size() - 1].begin()))
+        continue;
+      line.points.push_back(part->points[j]);
+      line.parameters.push_back(span.lerp(part->parameters[j]));
+    }
+  }
+  return line;
 }
 
 }  // namespace casteljau

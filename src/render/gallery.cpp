@@ -100,7 +100,7 @@ GalleryFigure construction_figure(const BezierCurve& curve, double t, std::strin
 }
 
 GalleryFigure split_figure(const BezierCurve& curve, double t) {
-  const auto [left, right] = split_at(curve, t);
+  const auto [left, right] = split_at(curve, t).value();  // the gallery splits inside (0, 1)
   Panel panel = geometry_panel();
   panel.polylines.push_back({plane_points(curve.control_points()), dotted(colors::gray, 1.0), "original polygon"});
   const Color a = cycle_color(0), b = cycle_color(1);

@@ -1,3 +1,4 @@
+#include "casteljau/curves/differential_geometry.hpp"
 #include "casteljau/render/plots.hpp"
 
 #include <fmt/format.h>
@@ -336,7 +337,7 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
       std::optional<std::pair<int, double>> construction;
       if (options.bezier.construction) {
         const double u = *options.bezier.construction;
-        if (auto ok = check_construction_domain(u, domain_of(source.models[m]), name); !ok) return ok.error();
+        if (auto ok = check_construction_domain(u, curve_view(source.models[m]).domain(), name); !ok) return ok.error();
         construction = std::pair<int, double>{0, u};
         if (const auto* piecewise = std::get_if<PiecewiseBezierCurve>(&source.models[m]))
           construction = locate(*piecewise, u);

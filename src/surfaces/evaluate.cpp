@@ -334,7 +334,7 @@ Point partial_derivative_at(const BezierSurface& surface, double u, double v, in
   return partial_derivative_at(to_bspline_surface(surface), u, v, order_u, order_v);
 }
 
-std::vector<std::vector<Point>> partial_derivatives_at(const BSplineSurface& surface, double u, double v,
+std::vector<std::vector<Point>> partial_derivatives_up_to(const BSplineSurface& surface, double u, double v,
                                                        int max_order) {
   assert(max_order >= 0);
   return derivative_table(surface, u, v, max_order, max_order, max_order);

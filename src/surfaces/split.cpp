@@ -28,7 +28,7 @@ Expected<std::pair<BezierSurface, BezierSurface>> split_at(const BezierSurface& 
     return Error{"the split parameter " + name + " = " + detail::number_text(t) +
                  " is not strictly inside the domain (0, 1)"};
   }
-  auto [first, second] = split_at(detail::wide_curve(surface, direction), t);
+  auto [first, second] = split_at(detail::wide_curve(surface, direction), t).value();  // t checked above
   return std::pair<BezierSurface, BezierSurface>(detail::surface_from_wide(first, direction, surface),
                                                  detail::surface_from_wide(second, direction, surface));
 }

@@ -51,7 +51,8 @@ RC_GTEST_PROP(Construction, LevelsGiveThePointAndTheHalves, ()) {
   RC_ASSERT(static_cast<int>(levels.size()) == n + 1);
   for (int r = 0; r <= n; ++r) RC_ASSERT(static_cast<int>(levels[r].size()) == n + 1 - r);
   RC_ASSERT(Point(levels[n][0].begin(), levels[n][0].end()) == point_at(curve, t));
-  const auto [left, right] = split_at(curve, t);
+  RC_PRE(t > 0.0 && t < 1.0);
+  const auto [left, right] = split_at(curve, t).value();
   for (int r = 0; r <= n; ++r) {
     RC_ASSERT(distance(levels[r][0], left.control_points()[r]) == 0.0);
     RC_ASSERT(distance(levels[r][n - r], right.control_points()[n - r]) == 0.0);

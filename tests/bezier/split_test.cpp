@@ -18,7 +18,7 @@ double max_distance(const Point& a, const Point& b) { return distance(a, b); }
 RC_GTEST_PROP(SplitAt, HalvesReproduceTheCurve, ()) {
   const auto curve = *test::any_bezier_curve(15);
   const double t = *rc::gen::map(rc::gen::inRange(1, 1000), [](int i) { return i / 1000.0; });
-  const auto [left, right] = split_at(curve, t);
+  const auto [left, right] = split_at(curve, t).value();
   RC_ASSERT(left.degree() == curve.degree() && right.degree() == curve.degree());
   const double tol = 1e-12 * std::max(1.0, scale_of(curve.control_points()));
   for (int i = 0; i <= 16; ++i) {
@@ -31,7 +31,8 @@ RC_GTEST_PROP(SplitAt, HalvesReproduceTheCurve, ()) {
 RC_GTEST_PROP(SplitAt, SplitPointIsPointAtBitForBit, ()) {
   const auto curve = *test::any_bezier_curve(20);
   const double t = *test::unit_parameter();
-  const auto [left, right] = split_at(curve, t);
+  RC_PRE(t > 0.0 && t < 1.0);
+  const auto [left, right] = split_at(curve, t).value();
   const Point p = point_at(curve, t);
   const auto& l = left.control_points();
   const auto& r = right.control_points();
@@ -39,10 +40,10 @@ RC_GTEST_PROP(SplitAt, SplitPointIsPointAtBitForBit, ()) {
   RC_ASSERT(Point(r[0].begin(), r[0].end()) == p);
 }
 
-RC_GTEST_PROP(Segment, ReproducesTheCurveOnItsInterval, ()) {
+RC_GTEST_PROP(ExtendedSegment, ReproducesTheCurveOnItsInterval, ()) {
   const auto curve = *test::any_bezier_curve(10);
   const double t0 = *test::unit_parameter(), t1 = *test::unit_parameter();
-  const auto piece = segment(curve, t0, t1);
+  const auto piece = extended_segment(curve, t0, t1);
   const double tol = 1e-12 * std::max(1.0, scale_of(curve.control_points()));
   for (int i = 0; i <= 8; ++i) {
     const double u = i / 8.0;
@@ -50,7 +51,7 @@ RC_GTEST_PROP(Segment, ReproducesTheCurveOnItsInterval, ()) {
   }
 }
 
-TEST(Segment, HighDegreeReversedAndExtrapolatedPieces) {
+TEST(ExtendedSegment, HighDegreeReversedAndExtrapolatedPieces) {
   // Two subdivisions, O(n^2): at degree 1000 a piece costs about as much as
   // three evaluations (one blossom per control point cost O(n^3), a billion
   // steps here). Reference: point_at on the whole curve, at every kind of
@@ -60,7 +61,7 @@ TEST(Segment, HighDegreeReversedAndExtrapolatedPieces) {
   const auto curve = BezierCurve::make(PointArray::make(2, std::move(coordinates)).value()).value();
   const double pieces[][2] = {{0.2, 0.3}, {0.7, 0.25}, {0.0, 0.01}, {0.99, 1.0}, {0.0, 0.0}, {0.4, 0.4}, {1.0, 0.0}};
   for (const auto& [t0, t1] : pieces) {
-    const auto piece = segment(curve, t0, t1);
+    const auto piece = extended_segment(curve, t0, t1);
     ASSERT_EQ(piece.degree(), 1000);
     for (int i = 0; i <= 8; ++i) {
       const double u = i / 8.0;
@@ -72,12 +73,25 @@ TEST(Segment, HighDegreeReversedAndExtrapolatedPieces) {
   const auto arc = BezierCurve::make(PointArray::make({{1, 0}, {1, 1}, {0, 1}}).value(), {1.0, std::sqrt(0.5), 1.0}).value();
   for (const auto* c : {&cubic, &arc})
     for (const auto& [t0, t1] : {std::pair{-0.5, 1.5}, std::pair{1.2, -0.3}, std::pair{-1.0, 0.0}, std::pair{1.1, 1.3}}) {
-      const auto piece = segment(*c, t0, t1);
+      const auto piece = extended_segment(*c, t0, t1);
       for (int i = 0; i <= 8; ++i) {
         const double u = i / 8.0;
         EXPECT_LE(max_distance(point_at(piece, u), point_at(*c, t0 + (t1 - t0) * u)), 1e-12) << t0 << " " << t1;
       }
     }
+}
+
+TEST(Segment, IsTheExtendedSegmentInsideTheDomainAndRefusesTheRest) {
+  const auto cubic = BezierCurve::make(PointArray::make({{0, 0}, {1, 2}, {3, 2}, {4, 0}}).value()).value();
+  EXPECT_EQ(segment(cubic, 0.25, 0.75).value(), extended_segment(cubic, 0.25, 0.75));
+  EXPECT_EQ(segment(cubic, 0.0, 1.0).value(), extended_segment(cubic, 0.0, 1.0));
+  EXPECT_EQ(segment(cubic, 0.75, 0.25).error().message, "the segment [0.75, 0.25] needs its start below its end");
+  EXPECT_EQ(segment(cubic, -0.5, 0.5).error().message, "the segment [-0.5, 0.5] is not inside the domain [0, 1]");
+  EXPECT_EQ(segment(cubic, 0.5, 0.5).error().message, "the segment [0.5, 0.5] needs its start below its end");
+  EXPECT_EQ(segment(cubic, std::nan(""), 0.5).error().message, "the segment's start is NaN");
+  EXPECT_EQ(split_at(cubic, 0.0).error().message, "the split parameter 0 is not strictly inside the domain [0, 1]");
+  EXPECT_EQ(split_at(cubic, 1.0).error().message, "the split parameter 1 is not strictly inside the domain [0, 1]");
+  EXPECT_EQ(split_at(cubic, INFINITY).error().message, "the split parameter is infinite");
 }
 
 RC_GTEST_PROP(Reversed, TraversesBackwards, ()) {

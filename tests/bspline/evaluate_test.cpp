@@ -123,7 +123,7 @@ TEST(BSplineDerivativeAt, EqualsExactDerivativesUpToOrderThree) {
 TEST(BSplineDerivativeAt, VanishesAbovePForPolynomialCurves) {
   const auto curve = *BSplineCurve::make(2, {0, 0, 0, 0.5, 1, 1, 1}, *PointArray::make({{0, 0}, {1, 2}, {3, 2}, {4, 0}}));
   EXPECT_EQ(derivative_at(curve, 0.3, 3), (Point{0, 0}));
-  EXPECT_EQ(derivatives_at(curve, 0.3, 5).size(), 6u);
+  EXPECT_EQ(derivatives_up_to(curve, 0.3, 5).size(), 6u);
 }
 
 TEST(BSplineBatch, EqualsTheScalarFunctions) {

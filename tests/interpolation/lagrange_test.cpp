@@ -144,7 +144,7 @@ TEST(Lagrange, ExactAtTheNodesAndBatchEqualsScalar) {
   }
   const PointArray values = PointArray::make(2, coordinates).value();
   const auto interpolant = interpolate_lagrange(values, nodes).value();
-  EXPECT_EQ(domain_of(interpolant), (Interval{0, 4}));
+  EXPECT_EQ(interpolant.domain(), (Interval{0, 4}));
   std::vector<double> ts(nodes);
   for (int j = 0; j <= 40; ++j) ts.push_back(4.0 * j / 40.0 - 0.25);  // a little outside too
   std::vector<double> out(ts.size() * 2);
@@ -239,7 +239,7 @@ TEST(Lagrange, RungeGrowsOnEquispacedNodesAndDecaysOnChebyshevNodes) {
 /// max |Bézier(s) − p(t)| over 401 points, relative to max |p(t)| there.
 double bezier_conversion_error(const BarycentricInterpolant& interpolant) {
   const auto bezier = to_bezier(interpolant).value();
-  const Interval domain = domain_of(interpolant);
+  const Interval domain = interpolant.domain();
   double error = 0, size = 0;
   for (int j = 0; j <= 400; ++j) {
     const double s = j / 400.0;

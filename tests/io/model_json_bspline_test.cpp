@@ -43,7 +43,7 @@ TEST(ModelJsonBSpline, ReadsTheInterfaceExample) {
           "control_points": [[0,0],[1,2],[2,2],[4,1],[4,0]]})");
   EXPECT_EQ(curve, make(3, {0, 0, 0, 0, 1, 2, 2, 2, 2}, 2, {0, 0, 1, 2, 2, 2, 4, 1, 4, 0}));
   EXPECT_FALSE(curve.is_rational());
-  EXPECT_EQ(domain_of(Model{curve}), (Interval{0.0, 2.0}));
+  EXPECT_EQ(curve_view(Model{curve}).domain(), (Interval{0.0, 2.0}));
 }
 
 TEST(ModelJsonBSpline, ReadsANurbsCurveInAnyFieldOrderAndDegreeWrittenAsAFloat) {
@@ -181,14 +181,14 @@ TEST(ModelBSpline, TheModelFunctionsAreTheBSplineOnes) {
   EXPECT_STREQ(type_name(model), "bspline");
   EXPECT_EQ(dimension_of(model), 3);
   EXPECT_EQ(control_point_count(model), 6u);
-  EXPECT_EQ(domain_of(model), (Interval{-1.0, 2.0}));
+  EXPECT_EQ(curve_view(model).domain(), (Interval{-1.0, 2.0}));
   const std::vector<double> us{-1, -0.5, 0, 0.25, 0.5, 1.999, 2, 0.5, -1};
   std::vector<double> out(us.size() * 3);
-  points_at(model, us, out);
+  points_at(curve_view(model), us, out);
   for (std::size_t i = 0; i < us.size(); ++i) {
     const Point expected = point_at(curve, us[i]);
     for (std::size_t j = 0; j < 3; ++j) EXPECT_EQ(test::bits_of(out[i * 3 + j]), test::bits_of(expected[j])) << us[i];
-    for (int k = 0; k <= 4; ++k) EXPECT_EQ(derivative_at(model, us[i], k), derivative_at(curve, us[i], k));
+    for (int k = 0; k <= 4; ++k) EXPECT_EQ(derivative_at(curve_view(model), us[i], k), derivative_at(curve, us[i], k));
   }
 }
 

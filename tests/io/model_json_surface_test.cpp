@@ -380,8 +380,8 @@ TEST(ModelJsonSurface, RefusesCoonsBoundariesThatDoNotMeetAndSaysWhere) {
 TEST(ModelJsonSurface, CurveFunctionsStillServeCurves) {
   const Model curve = parse_one(R"({"type": "bezier", "control_points": [[0,0],[1,2],[2,0]]})");
   EXPECT_FALSE(is_surface(curve));
-  EXPECT_EQ(domain_of(curve), (Interval{0.0, 1.0}));
-  EXPECT_EQ(derivative_at(curve, 0.5, 0), (Point{1, 1}));
+  EXPECT_EQ(curve_view(curve).domain(), (Interval{0.0, 1.0}));
+  EXPECT_EQ(derivative_at(curve_view(curve), 0.5, 0), (Point{1, 1}));
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ TEST(ModelJson, ReadsAPiecewiseCurveWithPolynomialAndRationalPieces) {
   ASSERT_EQ(piecewise.size(), 2);
   EXPECT_EQ(piecewise.pieces()[0], curve(2, {0, 0, 1, 1, 2, 1, 3, 0}));
   EXPECT_EQ(piecewise.pieces()[1], curve(2, {3, 0, 4, -1, 5, 0}, {1, 2, 1}));
-  EXPECT_EQ(domain_of(models[0]), (Interval{0.0, 2.0}));
+  EXPECT_EQ(curve_view(models[0]).domain(), (Interval{0.0, 2.0}));
 }
 
 TEST(ModelJson, ReadsSeveralModelsInOrder) {

@@ -18,6 +18,7 @@
 #include "casteljau/bezier/bezier_curve.hpp"
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/ops/flatten.hpp"
+#include "support/bspline_generators.hpp"
 
 namespace casteljau {
 namespace {
@@ -172,6 +173,53 @@ TEST(Flatten, HighDegreesKeepEveryPromiseWithTheUnsplitHull) {
       EXPECT_EQ(*flatten_segment_count(curve, Tolerance{tolerance}), static_cast<long>(line->parameters.size()) - 1);
     }
 }
+/// Any curve kind through CurveView: the pieces' polylines joined, on the
+/// curve's own parameters, each segment within tolerance of its piece.
+void check_any_kind(CurveView curve, double tolerance) {
+  const auto line = flatten(curve, Tolerance{tolerance});
+  RC_ASSERT(line.has_value());
+  const BezierPieces pieces = to_bezier_pieces(curve);
+  const Interval domain = curve.domain();
+  RC_ASSERT(line->parameters.front() == domain.lower);
+  RC_ASSERT(line->parameters.back() == domain.upper);
+  std::size_t piece = 0;
+  for (std::size_t i = 0; i + 1 < line->parameters.size(); ++i) {
+    const double a = line->parameters[i], b = line->parameters[i + 1];
+    if (a == b) {  // a jump between pieces that do not meet: both ends kept
+      RC_ASSERT(std::find(pieces.breakpoints.begin(), pieces.breakpoints.end(), a) != pieces.breakpoints.end());
+      continue;
+    }
+    RC_ASSERT(a < b);
+    while (b > pieces.breakpoints[piece + 1]) ++piece;  // the piece this segment lies on
+    const double lower = pieces.breakpoints[piece], width = pieces.breakpoints[piece + 1] - lower;
+    RC_ASSERT(a >= lower);
+    RC_ASSERT(sampled_deviation(pieces.pieces[piece], (a - lower) / width, (b - lower) / width, line->points[i],
+                                line->points[i + 1], 16) <= tolerance * (1 + 1e-9));
+  }
+}
+
+RC_GTEST_PROP(Flatten, BSplineCurvesStayWithinToleranceOnTheirOwnParameters, ()) {
+  const BSplineCurve curve = *test::bspline_curve({.max_degree = 5});
+  check_any_kind(curve, std::max(1.0, scale_of(curve.control_points())) * std::pow(10.0, -*rc::gen::inRange(1, 5)));
+}
+
+RC_GTEST_PROP(Flatten, PiecewiseCurvesStayWithinToleranceOnTheirOwnParameters, ()) {
+  std::vector<BezierCurve> pieces;
+  for (int i = *rc::gen::inRange(1, 4); i > 0; --i) pieces.push_back(random_curve(*rc::gen::inRange(1, 5), 2, false));
+  const auto curve = PiecewiseBezierCurve::make(std::move(pieces)).value();
+  check_any_kind(curve, 0.01);
+}
+
+TEST(Flatten, AnyKindKeepsAJointVertexOnceAndAJumpTwice) {
+  const auto a = BezierCurve::make(PointArray::make({{0, 0}, {1, 1}}).value()).value();
+  const auto b = BezierCurve::make(PointArray::make({{1, 1}, {2, 0}}).value()).value();
+  const auto c = BezierCurve::make(PointArray::make({{5, 5}, {6, 5}}).value()).value();
+  const auto joined = flatten(PiecewiseBezierCurve::make({a, b}).value(), Tolerance{0.1}).value();
+  EXPECT_EQ(joined.parameters, (std::vector<double>{0, 1, 2}));
+  const auto jump = flatten(PiecewiseBezierCurve::make({a, c}).value(), Tolerance{0.1}).value();
+  EXPECT_EQ(jump.parameters, (std::vector<double>{0, 1, 1, 2}));
+}
+
 RC_GTEST_PROP(Flatten, SpaceCurvesStayWithinTolerance, ()) { check_random(*rc::gen::inRange(2, 6), 3, false); }
 RC_GTEST_PROP(Flatten, LineCurvesStayWithinTolerance, ()) { check_random(*rc::gen::inRange(1, 6), 1, false); }
 RC_GTEST_PROP(Flatten, FourDimensionalRationalCurvesStayWithinTolerance, ()) { check_random(3, 4, true); }

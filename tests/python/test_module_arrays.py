@@ -114,7 +114,7 @@ def test_single_parameters_accept_python_and_numpy_scalars(curve):
     expected = cj.point_at(curve, 1.0)
     for u in (1, np.float32(1.0), np.int64(1), np.float64(1.0)):
         np.testing.assert_array_equal(cj.point_at(curve, u), expected)
-    table = cj.derivatives_at(curve, 1, 2)  # an int u: the single-point overload
+    table = cj.derivatives_up_to(curve, 1, 2)  # an int u
     assert table.shape == (3, 3)
     np.testing.assert_array_equal(table[0], expected)
 

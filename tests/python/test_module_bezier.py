@@ -212,7 +212,7 @@ def test_bezier_basis_polynomial_degree_3():
 
 @SETTINGS
 @given(polygons(), st.integers(0, 4), unit_t)
-def test_derivative_matches_exact_hodograph(points, order, t):
+def test_derivative_matches_exact_derivative_curve(points, order, t):
     n = len(points) - 1
     curve = c.BezierCurve(points)
     # k-th hodograph: n!/(n-k)! Delta^k P in Fractions, then de Casteljau.
@@ -226,17 +226,17 @@ def test_derivative_matches_exact_hodograph(points, order, t):
         expected = [factor * x for x in exact_casteljau(rows, t)]
     derivative = c.derivative_at(curve, t, order)
     close(derivative, expected, scale_of(points) * max(1, math.perm(n, min(order, n))) * 2**order)
-    hodo = c.hodograph(curve, order)
+    hodo = c.derivative_curve(curve, order)
     close(c.point_at(hodo, t), expected, scale_of(points) * max(1, math.perm(n, min(order, n))) * 2**order)
 
 
-def test_derivatives_at_single_and_batch():
+def test_derivatives_up_to_and_the_batch_derivatives_at():
     curve = c.BezierCurve(SEED_POINTS)
-    table = c.derivatives_at(curve, 0.5, 3)
+    table = c.derivatives_up_to(curve, 0.5, 3)
     assert table.shape == (4, 2)
     for k in range(4):
         np.testing.assert_array_equal(table[k], c.derivative_at(curve, 0.5, k))
-    np.testing.assert_array_equal(c.derivatives_at(curve, 1, 2), c.derivatives_at(curve, 1.0, 2))
+    np.testing.assert_array_equal(c.derivatives_up_to(curve, 1, 2), c.derivatives_up_to(curve, 1.0, 2))
     ts = np.linspace(0, 1, 9)
     batch = c.derivatives_at(curve, ts, 1)
     for t, row in zip(ts, batch):
@@ -291,7 +291,7 @@ def test_rational_split_outside_refuses_non_positive_weights():
     curve = c.BezierCurve([[0, 0], [1, 1], [2, 0]], [1, 10, 1])
     left, right = c.split_at(curve, 0.5)
     assert left.is_rational and right.is_rational
-    with pytest.raises(ValueError, match="outside the domain"):
+    with pytest.raises(ValueError, match="not strictly inside the domain"):
         c.split_at(curve, -3.0)
     with pytest.raises(ValueError, match="weight"):
         c.split_at(curve, -3.0, extrapolate=True)

@@ -343,7 +343,7 @@ def test_partial_derivatives_match_finite_differences(seed, kind):
     size = max(np.abs(su).max(), np.abs(sv).max(), scale_of(surface))
     np.testing.assert_allclose(su, fd_u, rtol=0, atol=1e-5 * size)
     np.testing.assert_allclose(sv, fd_v, rtol=0, atol=1e-5 * size)
-    table = c.partial_derivatives_at(surface, u, v, 2)
+    table = c.partial_derivatives_up_to(surface, u, v, 2)
     assert table.shape == (3, 3, 3)
     np.testing.assert_allclose(table[0, 0], c.point_at(surface, u, v), rtol=0, atol=1e-13 * size)
     np.testing.assert_allclose(table[1, 0], su, rtol=0, atol=1e-12 * size)
@@ -640,7 +640,7 @@ def test_parameters_outside_the_domain_nan_and_extrapolation():
     with pytest.raises(ValueError, match="outside"):
         c.normals_at(surface, [[0.5, 5.0]])
     with pytest.raises(ValueError, match="outside"):
-        c.partial_derivatives_at(surface, 0.5, 5.0, 1)
+        c.partial_derivatives_up_to(surface, 0.5, 5.0, 1)
     for pairs in (np.zeros((3, 3)), np.zeros(2), np.zeros((2, 2, 2))):
         with pytest.raises(ValueError, match=r"\(k, 2\)"):
             c.points_at(surface, pairs)
@@ -662,7 +662,7 @@ def test_preconditions_raise_instead_of_asserting():
             c.partial_derivative_at(patch, 0.5, 0.5, order_u, order_v)
     for order in (-1, 101, 1001):
         with pytest.raises(ValueError, match="max_order"):
-            c.partial_derivatives_at(surface, 0.5, 0.5, order)
+            c.partial_derivatives_up_to(surface, 0.5, 0.5, order)
     np.testing.assert_array_equal(c.partial_derivative_at(surface, 0.5, 0.5, 5, 0), [0, 0, 0])
     plane = c.BSplineSurface(1, 1, [0, 0, 1, 1], [0, 0, 1, 1], np.zeros((2, 2, 2)))
     with pytest.raises(ValueError, match="R\\^3"):

@@ -59,7 +59,7 @@ void check_exact(const BSplineSurface& s, double bound, const char* what) {
     for (double v : vs) {
       const auto exact = test::exact_surface_derivatives(s, u, v, 3, 3);
       points.add(test::relative_error(point_at(s, u, v), exact[0][0], table_scale(exact, 0, 0)));
-      const auto table = partial_derivatives_at(s, u, v, 3);
+      const auto table = partial_derivatives_up_to(s, u, v, 3);
       for (int k = 0; k <= 3; ++k)
         for (int l = 0; k + l <= 3; ++l) {
           const double scale = table_scale(exact, k, l);
@@ -139,7 +139,7 @@ RC_GTEST_PROP(SurfaceEvaluateProperties, RandomSurfacesMatchTheExactReference, (
   const double ratio = test::weight_ratio(s.weights());
   const double scale = std::max(1.0, scale_of(s.control_net().points()));
   RC_ASSERT(test::relative_error(point_at(s, u, v), exact[0][0], scale) <= 1e-14 * ratio);
-  const auto table = partial_derivatives_at(s, u, v, 2);
+  const auto table = partial_derivatives_up_to(s, u, v, 2);
   for (int k = 0; k <= 1; ++k)
     for (int l = 0; l <= 1; ++l)
       RC_ASSERT(test::relative_error(table[k][l], exact[k][l], table_scale(exact, k, l) + scale) <=
@@ -217,7 +217,7 @@ RC_GTEST_PROP(SurfaceEvaluateProperties, DerivativesMatchFiniteDifferences, ()) 
   const auto [u, hu_span] = inside(Direction::u);
   const auto [v, hv_span] = inside(Direction::v);
   const double hu = 1e-4 * hu_span, hv = 1e-4 * hv_span;
-  const auto table = partial_derivatives_at(s, u, v, 2);
+  const auto table = partial_derivatives_up_to(s, u, v, 2);
   const auto at = [&](double a, double b) { return point_at(s, a, b); };
   const Point pu = at(u + hu, v), mu = at(u - hu, v), pv = at(u, v + hv), mv = at(u, v - hv);
   const Point pp = at(u + hu, v + hv), pm = at(u + hu, v - hv), mp = at(u - hu, v + hv), mm = at(u - hu, v - hv);

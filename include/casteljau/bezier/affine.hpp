@@ -34,6 +34,11 @@ struct AffineMap {
 /// A x + b for one point (x.size() == map.dimension).
 Point transformed_point(const AffineMap& map, std::span<const double> x);
 
+/// Every point of the array mapped; error when the map's dimension is not the
+/// points' ("the affine map acts on R^3, the curve lives in R^2"). What every
+/// curve kind's transformed runs on its control points.
+Expected<PointArray> transformed_points(const AffineMap& map, const PointArray& points);
+
 /// The curve with every control point mapped (weights unchanged): the image of
 /// the curve under the map. Error when the dimensions differ.
 Expected<BezierCurve> transformed(const BezierCurve& curve, const AffineMap& map);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "casteljau/core/expected.hpp"
+#include "casteljau/core/interval.hpp"
 #include "casteljau/core/point_array.hpp"
 
 namespace casteljau {
@@ -37,6 +38,8 @@ class BezierCurve {
   std::span<const double> weights() const noexcept { return weights_; }
   /// True when the curve carries weights (even if they are all equal).
   bool is_rational() const noexcept { return !weights_.empty(); }
+  /// [0, 1], the parameter domain (the curve concept's domain(), curves/curve.hpp).
+  Interval domain() const noexcept { return {0.0, 1.0}; }
 
   friend bool operator==(const BezierCurve&, const BezierCurve&) = default;
 

@@ -4,12 +4,16 @@
 // Parameters: a Bézier curve's domain is [0,1]. Every function here accepts
 // any finite t and, outside [0,1], evaluates the same polynomial (or rational
 // function): it extrapolates, it does not clamp. Front ends (CLI, Python)
-// refuse parameters outside the domain before calling these.
+// refuse parameters outside the domain before calling these, or call
+// points_at_within, which checks them as it evaluates.
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
 #include "casteljau/bezier/bezier_curve.hpp"
+#include "casteljau/core/expected.hpp"
+#include "casteljau/core/interval.hpp"
 
 namespace casteljau {
 
@@ -40,34 +44,36 @@ void points_at(const BezierCurve& curve, std::span<const double> ts, std::span<d
 Point derivative_at(const BezierCurve& curve, double t, int order);
 
 /// C(t), C'(t), ..., C^(max_order)(t) in one pass (same formulas as derivative_at).
-std::vector<Point> derivatives_at(const BezierCurve& curve, double t, int max_order);
+std::vector<Point> derivatives_up_to(const BezierCurve& curve, double t, int max_order);
 
-/// The k-th hodograph of a polynomial curve: the Bézier curve of degree n-k
-/// whose control points are n!/(n-k)! Delta^k P_i (Farin §4.3). For k > n, the
-/// zero curve of degree 0. Refuses rational curves (their derivative is not a
-/// Bézier curve of that form).
-Expected<BezierCurve> hodograph(const BezierCurve& curve, int order = 1);
+/// points_at for parameters from outside, checked as they are evaluated: it
+/// stops at the first parameter outside `allowed` (NaN is outside every
+/// interval) and returns its index, ts.size() when all are inside (the
+/// B-spline's points_at_within, same contract). Each block of parameters is
+/// checked just before the kernel reads it, while it is in cache. After a
+/// stop the rows of `out` past the index are unspecified. Never allocates.
+std::size_t points_at_within(const BezierCurve& curve, std::span<const double> ts, Interval allowed,
+                             std::span<double> out);
 
-/// Unit tangent C'(t)/|C'(t)|. Where C'(t) vanishes (a repeated end control
-/// point, a cusp), the direction of the first derivative that does not vanish
-/// (relative to the curve's scale, tolerances::kVanishingDerivative): the
-/// one-sided limit of the tangent, toward increasing t. The zero vector
-/// for a curve that is a single point.
-Point unit_tangent_at(const BezierCurve& curve, double t);
+/// Batch k-th derivatives: out[i*d ..] = derivative_at(curve, ts[i], order)
+/// to rounding. Polynomial curves: the batch kernel on the k-th derivative
+/// curve (one allocation per call, for it); rational ones: A4.2 per
+/// parameter, without allocating up to degree kMaxStackDegree.
+void derivatives_at(const BezierCurve& curve, std::span<const double> ts, int order, std::span<double> out);
 
-/// Unit principal normal: the part of C'' orthogonal to the tangent,
-/// normalised (points toward the centre of curvature). Where the curvature is
-/// zero it is undefined; then in the plane the left normal (tangent turned by
-/// +90 degrees), in other dimensions the zero vector. d = 1: always zero.
-Point unit_normal_at(const BezierCurve& curve, double t);
+/// Batch points and first derivatives: points[i*d ..] = C(ts[i]) (as points_at)
+/// and derivatives[i*d ..] = C'(ts[i]) (as derivatives_at). Both of size ts.size() * d.
+void points_and_derivatives_at(const BezierCurve& curve, std::span<const double> ts, std::span<double> points,
+                               std::span<double> derivatives);
 
-/// Curvature kappa = sqrt(|C'|^2 |C''|^2 - (C'.C'')^2) / |C'|^3 (any d; in the
-/// plane this is |C' x C''| / |C'|^3, unsigned). +inf where C' = 0 and C'' != 0
-/// (a cusp), 0 where both vanish.
-double curvature_at(const BezierCurve& curve, double t);
+/// The k-th derivative curve (the hodograph) of a polynomial curve: the
+/// Bézier curve of degree n-k whose control points are n!/(n-k)! Delta^k P_i
+/// (Farin §4.3). For k > n, the zero curve of degree 0. Refuses rational
+/// curves (their derivative is not a Bézier curve of that form) and k < 0.
+/// The same verb as the B-spline's derivative_curve (bspline/hodograph.hpp).
+Expected<BezierCurve> derivative_curve(const BezierCurve& curve, int order = 1);
 
-/// Signed curvature of a plane curve, (C' x C'') / |C'|^3: positive when the
-/// curve turns left. Requires dimension() == 2.
-double signed_curvature_at(const BezierCurve& curve, double t);
+/// {0, 1}: a Bézier curve is one polynomial piece.
+std::vector<double> breakpoints(const BezierCurve& curve);
 
 }  // namespace casteljau

@@ -33,6 +33,9 @@ struct BezierPieces {
 /// domain (a jump) give pieces that do not meet.
 BezierPieces to_bezier_pieces(const BSplineCurve& curve);
 
+/// A Bézier curve as its one piece on [0, 1].
+BezierPieces to_bezier_pieces(const BezierCurve& curve);
+
 /// The pieces of a piecewise Bézier curve of model JSON (piece i on [i, i+1]).
 BezierPieces to_bezier_pieces(const PiecewiseBezierCurve& curve);
 

@@ -39,7 +39,11 @@ Point point_at_basis_sum(const BSplineCurve& curve, double u);
 Point derivative_at(const BSplineCurve& curve, double u, int order);
 
 /// C(u), C'(u), ..., C^(max_order)(u) in one pass (same formulas as derivative_at).
-std::vector<Point> derivatives_at(const BSplineCurve& curve, double u, int max_order);
+std::vector<Point> derivatives_up_to(const BSplineCurve& curve, double u, int max_order);
+
+/// The distinct knots inside the domain, both ends included, increasing: the
+/// parameters where the curve may be less smooth (its Bézier pieces' breakpoints).
+std::vector<double> breakpoints(const BSplineCurve& curve);
 
 /// Batch evaluation: out[i*d .. i*d+d) = C(us[i]) for every i, parameters in
 /// any order (sorted runs are fastest). Writes into the caller's storage and

@@ -4,6 +4,7 @@
 
 #include <utility>
 
+#include "casteljau/bezier/affine.hpp"
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/interval.hpp"
@@ -43,5 +44,19 @@ BSplineCurve clamped(const BSplineCurve& curve);
 /// O(n w + p^2 w). Errors: u not finite or not strictly inside the domain,
 /// u closer than tolerances::kMinKnotSpan to a knot without being one.
 Expected<std::pair<BSplineCurve, BSplineCurve>> split_at(const BSplineCurve& curve, double u);
+
+/// The curve restricted to [u0, u1] (t_p <= u0 < u1 <= t_{n+1}), clamped,
+/// on the same parameters: both ends inserted to multiplicity p (A5.4), the
+/// knots and control points outside dropped (The NURBS Book §5.3). Errors as
+/// for every curve kind (core/parameter_checks.hpp): not finite, outside the
+/// domain, u0 >= u1; and an end closer than tolerances::kMinKnotSpan to a knot
+/// without being one.
+Expected<BSplineCurve> segment(const BSplineCurve& curve, double u0, double u1);
+
+/// The curve with every control point mapped by x -> A x + b (weights and
+/// knots unchanged): its image, as B-splines are affinely invariant (The
+/// NURBS Book §3.2, property P3.3). Errors: the map's dimension differs from
+/// the curve's, or a mapped point leaves the valid coordinates.
+Expected<BSplineCurve> transformed(const BSplineCurve& curve, const AffineMap& map);
 
 }  // namespace casteljau

@@ -26,6 +26,8 @@ struct BarycentricInterpolant {
   std::vector<double> nodes;    ///< t_0 < ... < t_n
   std::vector<double> weights;  ///< w_0 .. w_n, max |w_j| = 1
   PointArray values;            ///< P_0 .. P_n (n+1 points of R^d)
+  /// [t_0, t_n], the interval the interpolant was built on (a member, as every curve's domain()).
+  Interval domain() const { return {nodes.front(), nodes.back()}; }
   friend bool operator==(const BarycentricInterpolant&, const BarycentricInterpolant&) = default;
 };
 
@@ -49,9 +51,6 @@ Expected<BarycentricInterpolant> interpolate_lagrange(const PointArray& points, 
 /// Errors: count < 2 or above tolerances::kMaxLagrangeDegree + 1, an interval
 /// that is not finite or has lower >= upper. O(count).
 Expected<std::vector<double>> chebyshev_parameters(std::size_t count, Interval domain = {});
-
-/// [t_0, t_n], the interval the interpolant was built on.
-Interval domain_of(const BarycentricInterpolant& interpolant);
 
 /// p(t) by the second (true) barycentric formula; exactly P_j at t = t_j
 /// (and where t is so close to t_j that w_j / (t − t_j) overflows). Any finite

@@ -14,6 +14,7 @@
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/core/interval.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/curves/curve_view.hpp"
 #include "casteljau/surfaces/bezier_surface.hpp"
 #include "casteljau/surfaces/bspline_surface.hpp"
 #include "casteljau/surfaces/coons.hpp"
@@ -25,7 +26,10 @@ namespace casteljau {
 /// Every model kind of model JSON version 1: the curves `bezier`,
 /// `piecewise_bezier`, `bspline` (B-spline or NURBS) and the surfaces
 /// `bezier_surface`, `bspline_surface` (B-spline or NURBS) and `coons`.
-/// Curves come first: is_surface() tells the two families apart.
+/// Curves come first: is_surface() tells the two families apart (a curve is
+/// an alternative that meets CurveKind, curves/curve.hpp). A new curve kind
+/// is its alternative here, its entry in CurveView and its model JSON reader
+/// and writer; every curve operation then reaches it through curve_view().
 using Model = std::variant<BezierCurve, PiecewiseBezierCurve, BSplineCurve, BezierSurface, BSplineSurface,
                            CoonsPatch>;
 
@@ -39,10 +43,11 @@ bool is_surface(const Model& model);
 /// through it: domain_u/domain_v, point_at, partial_derivative_at, grids.
 SurfaceView surface_view(const Model& model);
 
-/// Curves only: the model's parameter domain: [0,1] for a Bézier curve, [0,m]
-/// for m pieces, [t_p, t_{n+1}] for a B-spline of degree p with n+1 control
-/// points. A surface has two domains: surface_view(model).domain_u(), domain_v().
-Interval domain_of(const Model& model);
+/// A non-owning view of a curve model (asserts !is_surface(model)); the
+/// model must outlive the view. All curve work of the front ends goes through
+/// it and the functions written on it (curves/curve_view.hpp): domain(),
+/// point_at, derivative_at, points_at_within, differential geometry, flatten.
+CurveView curve_view(const Model& model);
 
 /// The dimension of the space the model (curve or surface) lives in.
 int dimension_of(const Model& model);
@@ -52,18 +57,6 @@ int dimension_of(const Model& model);
 /// a Bézier or B-spline surface; for a Coons patch, those of its four
 /// boundary curves together).
 std::size_t control_point_count(const Model& model);
-
-/// Curves only: the model's points at the parameters `us` (any order) into out (size
-/// us.size() * d), bit for bit as point_at. Parameters outside the domain
-/// extrapolate (see bezier/evaluate.hpp, bspline/evaluate.hpp): front ends
-/// check them first.
-void points_at(const Model& model, std::span<const double> us, std::span<double> out);
-
-/// Curves only: the k-th derivative at u (k = 0: the point), k >= 0. For a piecewise curve
-/// at a junction u = i, the derivative of piece i (the one to the right), and
-/// at u = m that of the last piece; for a B-spline at a knot, that of the span
-/// to the right, and at the end of the domain that of the last span.
-Point derivative_at(const Model& model, double u, int order);
 
 /// The model's type name in model JSON ("bezier", "piecewise_bezier",
 /// "bspline", "bezier_surface", "bspline_surface", "coons").

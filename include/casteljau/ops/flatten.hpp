@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "casteljau/bezier/bezier_curve.hpp"
+#include "casteljau/curves/curve_view.hpp"
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/tolerance.hpp"
 
@@ -14,8 +15,8 @@ namespace casteljau {
 
 /// Polyline vertices on a curve, with the parameter of each vertex.
 struct Polyline {
-  PointArray points;               ///< vertices, in order; first C(0), last C(1)
-  std::vector<double> parameters;  ///< t of each vertex, increasing from 0 to 1
+  PointArray points;               ///< vertices, in order; first and last the curve's ends
+  std::vector<double> parameters;  ///< parameter of each vertex, increasing over the domain
 };
 
 /// A polyline through points of the curve, vertex i = point_at(curve, t_i)
@@ -37,6 +38,15 @@ struct Polyline {
 /// can certify for this curve (kFlattenSmallestToleranceFactor x allowance);
 /// more than tolerances::kMaxFlattenSegments segments.
 Expected<Polyline> flatten(const BezierCurve& curve, Tolerance tolerance);
+
+/// Any curve kind (CurveView): its Bézier pieces (to_bezier_pieces) each
+/// flattened as above within the tolerance and joined, the vertex at a joint
+/// once; the parameters are the curve's own (piece i's t mapped to
+/// [b_i, b_{i+1}]), from domain().lower to domain().upper. Where pieces do
+/// not meet (a knot of multiplicity p+1) both end points are kept, so the jump
+/// shows as one segment that is not within the tolerance. Errors as above,
+/// the piece named ("piece 3: ..."); kMaxFlattenSegments counts all pieces.
+Expected<Polyline> flatten(CurveView curve, Tolerance tolerance);
 
 /// flatten() with a caller's cap on the segment count (<= the library's
 /// tolerances::kMaxFlattenSegments in practice): an error, not a truncated

@@ -37,7 +37,7 @@ Point partial_derivative_at(const BSplineSurface& surface, double u, double v, i
 Point partial_derivative_at(const BezierSurface& surface, double u, double v, int order_u, int order_v);
 /// All partial derivatives with k + l <= max_order in one pass:
 /// result[k][l] = d^(k+l) S / du^k dv^l (The NURBS Book A3.6 / A4.4's SKL).
-std::vector<std::vector<Point>> partial_derivatives_at(const BSplineSurface& surface, double u, double v,
+std::vector<std::vector<Point>> partial_derivatives_up_to(const BSplineSurface& surface, double u, double v,
                                                        int max_order);
 /// The unit normal (S_u x S_v) / |S_u x S_v| of a surface in R^3 (asserts
 /// d == 3). Where S_u x S_v vanishes (a degenerate edge such as the pole of a

@@ -1,0 +1,67 @@
+// CurveView: each operation forwards to the kind's own function.
+#include "casteljau/curves/curve_view.hpp"
+
+#include <algorithm>
+
+#include "casteljau/curves/curve.hpp"
+
+namespace casteljau {
+
+static_assert(Curve<CurveView>);
+
+Interval CurveView::domain() const noexcept {
+  return visit([](const auto& c) { return c.domain(); });
+}
+int CurveView::dimension() const noexcept {
+  return visit([](const auto& c) { return c.dimension(); });
+}
+int CurveView::degree() const noexcept {
+  return visit([](const auto& c) { return c.degree(); });
+}
+bool CurveView::is_rational() const noexcept {
+  return visit([](const auto& c) { return c.is_rational(); });
+}
+
+Point point_at(CurveView curve, double u) {
+  return curve.visit([u](const auto& c) { return point_at(c, u); });
+}
+Point derivative_at(CurveView curve, double u, int order) {
+  return curve.visit([=](const auto& c) { return derivative_at(c, u, order); });
+}
+std::vector<Point> derivatives_up_to(CurveView curve, double u, int max_order) {
+  return curve.visit([=](const auto& c) { return derivatives_up_to(c, u, max_order); });
+}
+void points_at(CurveView curve, std::span<const double> us, std::span<double> out) {
+  curve.visit([=](const auto& c) { points_at(c, us, out); });
+}
+std::size_t points_at_within(CurveView curve, std::span<const double> us, Interval allowed, std::span<double> out) {
+  return curve.visit([=](const auto& c) { return points_at_within(c, us, allowed, out); });
+}
+void derivatives_at(CurveView curve, std::span<const double> us, int order, std::span<double> out) {
+  curve.visit([=](const auto& c) { derivatives_at(c, us, order, out); });
+}
+void points_and_derivatives_at(CurveView curve, std::span<const double> us, std::span<double> points,
+                               std::span<double> derivatives) {
+  curve.visit([=](const auto& c) { points_and_derivatives_at(c, us, points, derivatives); });
+}
+std::vector<double> breakpoints(CurveView curve) {
+  return curve.visit([](const auto& c) { return breakpoints(c); });
+}
+BezierPieces to_bezier_pieces(CurveView curve) {
+  return curve.visit([](const auto& c) { return to_bezier_pieces(c); });
+}
+
+double scale_of(CurveView curve) {
+  struct Scale {
+    double operator()(const BezierCurve& c) const { return scale_of(c.control_points()); }
+    double operator()(const BSplineCurve& c) const { return scale_of(c.control_points()); }
+    double operator()(const PiecewiseBezierCurve& c) const {
+      double scale = 0.0;
+      for (const BezierCurve& piece : c.pieces()) scale = std::max(scale, scale_of(piece.control_points()));
+      return scale;
+    }
+  };
+  return curve.visit(Scale{});
+}
+
+}  // namespace casteljau
