@@ -20,5 +20,6 @@ void add_convert_command(CLI::App& app, int& status);    // cli/convert_command.
 void add_interpolate_command(CLI::App& app, int& status);  // cli/interpolate_command.cpp
 void add_fit_command(CLI::App& app, int& status);          // cli/fit_command.cpp
 void add_tessellate_command(CLI::App& app, int& status);   // cli/tessellate_command.cpp
+void add_length_command(CLI::App& app, int& status);       // cli/length_command.cpp
 
 }  // namespace casteljau::cli

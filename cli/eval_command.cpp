@@ -15,6 +15,7 @@
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_json.hpp"
+#include "casteljau/ops/arc_length.hpp"
 #include "commands.hpp"
 
 namespace casteljau::cli {
@@ -27,6 +28,7 @@ struct EvalOptions {
   std::string samples;
   std::string derivative = "0";
   std::string output;
+  bool arc_length = false;
 };
 
 std::string domain_text(const Interval& domain) { return fmt::format("[{}, {}]", domain.lower, domain.upper); }
@@ -111,6 +113,8 @@ int run_eval(const EvalOptions& options) {
     if (*n == 0) return fail("--samples: 0 samples, give N >= 1 (N = 1 is the start of the domain)");
     samples = static_cast<std::size_t>(*n);
   }
+  if (options.arc_length && !has_samples)
+    return fail("--arc-length spaces the --samples points along the curve: give --samples N too");
   if (options.at.empty() && options.params.empty() && !has_samples) {
     return fail("nothing to evaluate: give --at T (u,v for a surface), --params FILE.csv or --samples N");
   }
@@ -120,6 +124,8 @@ int run_eval(const EvalOptions& options) {
   if (!models) return fail(models.error());
   bool any_curve = false, any_surface = false;
   for (const Model& model : *models) (is_surface(model) ? any_surface : any_curve) = true;
+  if (options.arc_length && any_surface)
+    return fail("--arc-length spaces points along curves; " + options.model + " holds a surface");
 
   // --- the options read as the models' kinds need them ----------------------
   // A curve takes T and K, a surface u,v and ku,kv; a file that mixes both
@@ -261,7 +267,15 @@ int run_eval(const EvalOptions& options) {
     us.clear();
     us.insert(us.end(), curve.at.begin(), curve.at.end());
     us.insert(us.end(), curve.params.values.begin(), curve.params.values.end());
-    append_samples(us, domain, samples);
+    if (options.arc_length && samples > 1) {
+      // N points equally spaced along the curve (ops/arc_length.hpp), each
+      // length within the default accuracy (1e-12 of the curve's size).
+      auto spaced = equal_arc_length_parameters(view, samples, default_arc_length_tolerance(view));
+      if (!spaced) return fail(with_context(spaced.error(), model_name(*models, m, options.model)));
+      us.insert(us.end(), spaced->begin(), spaced->end());
+    } else {
+      append_samples(us, domain, samples);
+    }
 
     const auto d = static_cast<std::size_t>(dimension_of(model));
     constexpr std::size_t kBlock = 4096;  // parameters per batch: bounded scratch memory
@@ -314,6 +328,9 @@ void add_eval_command(CLI::App& app, int& status) {
           "Print K-th derivatives instead of points (K = 0: points); for a surface ku,kv, the partial derivative "
           "d^(ku+kv)S / du^ku dv^kv (0 or 0,0: points)")
       ->type_name("K|ku,kv");
+  eval->add_flag("--arc-length", options->arc_length,
+                 "Space the --samples points equally along the curve (in arc length, within 1e-12 of the curve's "
+                 "size) instead of in the parameter; curves only");
   CLI::Option* output = eval->add_option("-o,--output", options->output, kOutputHelp)->type_name("FILE");
   set_action(eval, status, {{model, params}, output}, [options] { return run_eval(*options); });
 }

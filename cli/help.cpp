@@ -52,6 +52,8 @@ constexpr std::array kEntries{
     Entry{"fit", "A B-spline near the points of a CSV file",
           "casteljau fit examples/head.csv --degree 3 --control-points 10 -o head_fit.json",
           "a least-squares cubic B-spline with 10 control points near the head's points"},
+    Entry{"length", "The arc length of curves, within a tolerance", "casteljau length examples/semicircle.json",
+          "the length of the exact NURBS half circle of radius 3: 3 pi = 9.42477796076938"},
     Entry{"tessellate", "A triangle mesh of surfaces (OBJ, STL, PLY)",
           "casteljau tessellate examples/sphere.json --tolerance 0.001 -o sphere.stl",
           "a watertight triangle mesh within 0.001 of the NURBS sphere"},

@@ -20,6 +20,7 @@
 #include "casteljau/bezier/bezier_curve.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/curves/curve_view.hpp"
+#include "casteljau/ops/arc_length.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/tessellate.hpp"
@@ -155,11 +156,17 @@ struct KindTag {
   using type = T;
 };
 
-/// f(KindTag<Kind>{}) for the curve kinds other than BezierCurve.
-template <class F>
-void for_other_curve_kinds(F&& f) {
-  f(KindTag<PiecewiseBezierCurve>{});
-  f(KindTag<BSplineCurve>{});
+/// f(KindTag<Kind>{}) for each of the curve kinds Kinds.
+template <class... Kinds, class F>
+void for_curve_kinds(F&& f) {
+  (f(KindTag<Kinds>{}), ...);
+}
+
+/// The tolerance argument of the arc-length functions: None for the default
+/// (1e-12 of the curve's size), else a distance checked as tolerance_from does.
+Tolerance arc_length_tolerance(CurveView curve, const py::object& tolerance) {
+  if (tolerance.is_none()) return default_arc_length_tolerance(curve);
+  return Tolerance{tolerance.cast<double>()};
 }
 
 }  // namespace
@@ -187,7 +194,7 @@ void bind_ops(py::module_& module) {
       "not a truncated polyline, when more are needed). The GIL is released.");
 
   // Every other curve kind: its Bézier pieces flattened and joined (flatten on CurveView).
-  for_other_curve_kinds([&module](auto kind) {
+  for_curve_kinds<PiecewiseBezierCurve, BSplineCurve>([&module](auto kind) {
     using Kind = typename decltype(kind)::type;
     module.def(
         "flatten",
@@ -198,6 +205,50 @@ void bind_ops(py::module_& module) {
         py::arg("curve"), py::arg("tolerance"),
         "A polyline within `tolerance` of the curve: its Bézier pieces flattened as above and joined, as (points "
         "(m+1, d), parameters (m+1,)) on the curve's own parameters (ops/flatten.hpp).");
+  });
+
+  // --- arc length (ops/arc_length.hpp), on every curve kind ----------------------
+  for_curve_kinds<BezierCurve, PiecewiseBezierCurve, BSplineCurve>([&module](auto kind) {
+    using Kind = typename decltype(kind)::type;
+    module.def(
+        "arc_length",
+        [](const Kind& curve, const py::object& tolerance, const py::object& start, const py::object& end) {
+          const CurveView view(curve);
+          const Tolerance accuracy = arc_length_tolerance(view, tolerance);
+          const Interval domain = view.domain();
+          const Interval range{start.is_none() ? domain.lower : start.cast<double>(),
+                               end.is_none() ? domain.upper : end.cast<double>()};
+          return unwrap(without_gil([&] { return arc_length(view, range, accuracy); }));
+        },
+        py::arg("curve"), py::arg("tolerance") = py::none(), py::kw_only(), py::arg("start") = py::none(),
+        py::arg("end") = py::none(),
+        "The arc length of the curve (or between the parameters start and end), within the absolute tolerance "
+        "(default 1e-12 of the curve's size): adaptive Gauss-Kronrod quadrature on its Bézier pieces, the accuracy "
+        "met, not estimated (ops/arc_length.hpp). ValueError for a tolerance not > 0 or below 1e-14 of the size, a "
+        "range outside the domain or backwards. The GIL is released.");
+    module.def(
+        "parameter_at_length",
+        [](const Kind& curve, double length, const py::object& tolerance) {
+          const CurveView view(curve);
+          const Tolerance accuracy = arc_length_tolerance(view, tolerance);
+          return unwrap(without_gil([&] { return parameter_at_length(view, length, accuracy); }));
+        },
+        py::arg("curve"), py::arg("length"), py::arg("tolerance") = py::none(),
+        "The parameter at which the length from the start of the domain is `length` (0 <= length <= the curve's "
+        "length), within the tolerance in length. ValueError otherwise.");
+    module.def(
+        "equal_arc_length_parameters",
+        [](const Kind& curve, long long count, const py::object& tolerance) {
+          const CurveView view(curve);
+          const Tolerance accuracy = arc_length_tolerance(view, tolerance);
+          if (count < 2) throw py::value_error(fmt::format("count is {}, it must be at least 2", count));
+          auto parameters = without_gil(
+              [&] { return equal_arc_length_parameters(view, static_cast<std::size_t>(count), accuracy); });
+          return to_numpy(std::span<const double>(unwrap(std::move(parameters))));
+        },
+        py::arg("curve"), py::arg("count"), py::arg("tolerance") = py::none(),
+        "count parameters, the ends of the domain included, whose points are equally spaced along the curve "
+        "(each length within the tolerance), as a (count,) array: points_at(curve, these) resamples it.");
   });
 
   module.def(

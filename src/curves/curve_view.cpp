@@ -2,6 +2,8 @@
 #include "casteljau/curves/curve_view.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 #include "casteljau/curves/curve.hpp"
 
@@ -62,6 +64,27 @@ double scale_of(CurveView curve) {
     }
   };
   return curve.visit(Scale{});
+}
+
+double size_of(CurveView curve) {
+  const int d = curve.dimension();
+  std::vector<double> lower(d, INFINITY), upper(d, -INFINITY);
+  auto add = [&](const PointArray& points) {
+    for (std::size_t i = 0; i < points.size(); ++i)
+      for (int j = 0; j < d; ++j) lower[j] = std::min(lower[j], points[i][j]), upper[j] = std::max(upper[j], points[i][j]);
+  };
+  struct Add {
+    decltype(add)& to;
+    void operator()(const BezierCurve& c) const { to(c.control_points()); }
+    void operator()(const BSplineCurve& c) const { to(c.control_points()); }
+    void operator()(const PiecewiseBezierCurve& c) const {
+      for (const BezierCurve& piece : c.pieces()) to(piece.control_points());
+    }
+  };
+  curve.visit(Add{add});
+  double sum = 0.0;
+  for (int j = 0; j < d; ++j) sum += (upper[j] - lower[j]) * (upper[j] - lower[j]);
+  return std::sqrt(sum);
 }
 
 }  // namespace casteljau

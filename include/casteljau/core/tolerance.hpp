@@ -35,6 +35,23 @@ inline constexpr int kMaxSubdivisionDepth = 24;
 /// would need more (a tolerance tiny against the curve's size) is refused.
 inline constexpr long kMaxFlattenSegments = 1L << 24;
 
+/// Smallest arc-length accuracy accepted, as a fraction of the curve's size
+/// (size_of: the diagonal of its control points' box). Each quadrature node
+/// sums O(n) products of O(size) numbers, so the length of one interval is
+/// known to about 1e-16 x size; over the thousands of intervals a long curve
+/// needs, 1e-14 is what double precision can still promise (the request is
+/// met down to 1e-13 in tests/ops/arc_length_test.cpp).
+inline constexpr double kMinArcLengthRelativeTolerance = 1e-14;
+
+/// Default accuracy of the CLI's `length`, relative to the curve's size.
+inline constexpr double kDefaultArcLengthRelativeTolerance = 1e-12;
+
+/// Largest number of quadrature intervals one arc-length computation may use
+/// (15 evaluations each). A curve that needs more at the requested accuracy
+/// (a tolerance tiny against a long, wildly varying curve) is refused rather
+/// than computed for minutes.
+inline constexpr long kMaxArcLengthIntervals = 1L << 22;
+
 /// Degree up to which kernels keep their de Casteljau triangle on the stack.
 /// Beyond it, a batch call allocates one workspace for the whole call.
 inline constexpr int kMaxStackDegree = 255;

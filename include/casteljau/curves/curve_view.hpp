@@ -67,5 +67,9 @@ BezierPieces to_bezier_pieces(CurveView curve);
 /// The largest |coordinate| of the control points (scale_of of all of them):
 /// the scale that relative tolerances on the curve are measured against.
 double scale_of(CurveView curve);
+/// The diagonal of the box of all control points: the curve's size, which
+/// relative accuracies (arc length, the CLI's defaults) are fractions of.
+/// The curve lies in the box (convex hull property, weights > 0).
+double size_of(CurveView curve);
 
 }  // namespace casteljau

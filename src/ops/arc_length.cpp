@@ -1,0 +1,293 @@
+// Arc length by adaptive Gauss–Kronrod quadrature on the Bézier pieces
+// (arc_length.hpp says why the request is met).
+#include "casteljau/ops/arc_length.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <string>
+#include <utility>
+
+#include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/bspline/bezier_pieces.hpp"
+#include "casteljau/core/point_array.hpp"
+#include "../core/number_text.hpp"
+
+namespace casteljau {
+namespace {
+
+using detail::number_text;
+
+// The 15-point Kronrod rule on [-1, 1] and the 7-point Gauss rule on its odd
+// nodes (QUADPACK's qk15, Piessens et al. 1983, table of xgk, wgk, wg).
+constexpr int kNodes = 15;
+constexpr double kKronrodNodes[8] = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+                                     0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+                                     0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+                                     0.207784955007898467600689403773245, 0.0};
+constexpr double kKronrodWeights[8] = {0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+                                       0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+                                       0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+                                       0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
+// Gauss weights of the nodes kKronrodNodes[1], [3], [5] and [7] (the centre).
+constexpr double kGaussWeights[4] = {0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
+                                     0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+
+/// |dC/dt| of one Bézier piece, 15 parameters at a time through the batch
+/// kernel: a polynomial piece evaluates its derivative curve; a rational one
+/// its homogeneous curve A and A', then C' = (A' w - A w') / w^2.
+class PieceSpeed {
+ public:
+  explicit PieceSpeed(const BezierCurve& piece)
+      : dimension_(piece.dimension()), rational_(piece.is_rational()),
+        homogeneous_(rational_ ? BezierCurve::from_trusted(homogeneous_points(piece)) : piece),
+        derivative_(derivative_curve(homogeneous_).value()),
+        scratch_(static_cast<std::size_t>(2 * kNodes) * (dimension_ + 1)) {}
+
+  void at(std::span<const double> ts, double* speeds) const {
+    const int d = dimension_, width = rational_ ? d + 1 : d;
+    const std::span<double> slope(scratch_.data(), ts.size() * width);
+    points_at(derivative_, ts, slope);
+    if (!rational_) {
+      for (std::size_t i = 0; i < ts.size(); ++i) speeds[i] = norm(slope.subspan(i * d, d));
+      return;
+    }
+    const std::span<double> point(scratch_.data() + kNodes * width, ts.size() * width);
+    points_at(homogeneous_, ts, point);
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      double* a1 = slope.data() + i * width;
+      const double* a0 = point.data() + i * width;
+      const double w = a0[d], w1 = a1[d];
+      for (int j = 0; j < d; ++j) a1[j] = (a1[j] * w - a0[j] * w1) / (w * w);
+      speeds[i] = norm(std::span<const double>(a1, d));
+    }
+  }
+
+  /// |dC/dt| at one parameter.
+  double at(double t) const {
+    double speed = 0.0;
+    at(std::span<const double>(&t, 1), &speed);
+    return speed;
+  }
+
+ private:
+  static double norm(std::span<const double> v) {
+    double largest = 0.0;
+    for (double c : v) largest = std::max(largest, std::abs(c));
+    if (largest == 0.0) return 0.0;
+    double sum = 0.0;
+    for (double c : v) sum += (c / largest) * (c / largest);
+    return largest * std::sqrt(sum);
+  }
+
+  int dimension_;
+  bool rational_;
+  BezierCurve homogeneous_;  // the piece itself when polynomial
+  BezierCurve derivative_;
+  mutable std::vector<double> scratch_;
+};
+
+/// The curve's pieces with their speeds, and the interval budget of one call.
+class Quadrature {
+ public:
+  explicit Quadrature(CurveView curve) : pieces_(to_bezier_pieces(curve)) {
+    speeds_.reserve(pieces_.pieces.size());
+    for (const BezierCurve& piece : pieces_.pieces) speeds_.emplace_back(piece);
+  }
+
+  std::size_t size() const { return pieces_.pieces.size(); }
+  Interval span(std::size_t k) const { return {pieces_.breakpoints[k], pieces_.breakpoints[k + 1]}; }
+  const PieceSpeed& speed(std::size_t k) const { return speeds_[k]; }
+
+  /// The length of piece k between its local parameters a <= b, within tolerance.
+  Expected<double> integrate(std::size_t k, double a, double b, double tolerance) {
+    const PieceSpeed& speed = speeds_[k];
+    double total = 0.0;
+    stack_.clear();
+    stack_.push_back({a, b, tolerance});
+    double ts[kNodes], f[kNodes];
+    while (!stack_.empty()) {
+      const Part part = stack_.back();
+      stack_.pop_back();
+      if (++intervals_ > tolerances::kMaxArcLengthIntervals)
+        return Error{"the arc length needs more than " + std::to_string(tolerances::kMaxArcLengthIntervals) +
+                     " quadrature intervals at this tolerance; ask for a larger one"};
+      const double centre = 0.5 * (part.a + part.b), half = 0.5 * (part.b - part.a);
+      for (int i = 0; i < 7; ++i) {
+        ts[2 * i] = centre - half * kKronrodNodes[i];
+        ts[2 * i + 1] = centre + half * kKronrodNodes[i];
+      }
+      ts[14] = centre;
+      speed.at(std::span<const double>(ts, kNodes), f);
+      double kronrod = kKronrodWeights[7] * f[14], gauss = kGaussWeights[3] * f[14];
+      for (int i = 0; i < 7; ++i) {
+        const double pair = f[2 * i] + f[2 * i + 1];
+        kronrod += kKronrodWeights[i] * pair;
+        if (i % 2 == 1) gauss += kGaussWeights[i / 2] * pair;
+      }
+      kronrod *= half, gauss *= half;
+      // Accepted within its share, or when it cannot be halved any more in
+      // double precision (then the interval is a few ulps wide and its
+      // length below any tolerance this function accepts).
+      const bool tiny = !(part.a < centre && centre < part.b);
+      if (std::abs(kronrod - gauss) <= part.tolerance || tiny) {
+        total += kronrod;
+      } else {
+        stack_.push_back({centre, part.b, 0.5 * part.tolerance});
+        stack_.push_back({part.a, centre, 0.5 * part.tolerance});
+      }
+    }
+    return total;
+  }
+
+ private:
+  struct Part {
+    double a, b, tolerance;
+  };
+  BezierPieces pieces_;
+  std::vector<PieceSpeed> speeds_;
+  std::vector<Part> stack_;
+  long intervals_ = 0;
+};
+
+Status check_tolerance(CurveView curve, Tolerance tolerance) {
+  const double e = tolerance.distance;
+  if (!std::isfinite(e) || !(e > 0.0))
+    return Error{"the arc-length tolerance is " + number_text(e) + ", it must be finite and > 0"};
+  const double size = size_of(curve);
+  if (e < tolerances::kMinArcLengthRelativeTolerance * size)
+    return Error{"the arc-length tolerance " + number_text(e) + " is below " +
+                 number_text(tolerances::kMinArcLengthRelativeTolerance) + " of the curve's size " +
+                 number_text(size) + ", more than double precision can promise"};
+  return {};
+}
+
+Status check_range(CurveView curve, Interval range) {
+  const Interval domain = curve.domain();
+  for (const auto& [value, name] : {std::pair{range.lower, "start"}, std::pair{range.upper, "end"}}) {
+    if (auto ok = check_finite(value, std::string("the arc-length range's ") + name); !ok) return ok;
+    if (!domain.contains(value))
+      return Error{std::string("the arc-length range's ") + name + " " + number_text(value) +
+                   " is outside the domain [" + number_text(domain.lower) + ", " + number_text(domain.upper) + "]"};
+  }
+  if (range.lower > range.upper)
+    return Error{"the arc-length range [" + number_text(range.lower) + ", " + number_text(range.upper) +
+                 "] runs backwards"};
+  return {};
+}
+
+/// The length over [range] with the tolerance shared among the pieces in
+/// proportion to their parameter widths inside the range.
+Expected<double> length_over(Quadrature& quadrature, Interval range, double tolerance) {
+  double total = 0.0;
+  const double width = range.length();
+  if (width == 0.0) return 0.0;
+  for (std::size_t k = 0; k < quadrature.size(); ++k) {
+    const Interval span = quadrature.span(k);
+    const double lower = std::max(range.lower, span.lower), upper = std::min(range.upper, span.upper);
+    if (!(lower < upper)) continue;
+    const double a = (lower - span.lower) / span.length(), b = upper == span.upper ? 1.0 : (upper - span.lower) / span.length();
+    auto piece = quadrature.integrate(k, a, b, tolerance * ((upper - lower) / width));
+    if (!piece) return piece;
+    total += *piece;
+  }
+  return total;
+}
+
+/// Lengths of every whole piece (the tolerance shared by parameter width) and
+/// their running sums: cumulative[k] = length before piece k.
+struct Cumulative {
+  std::vector<double> lengths, before;
+  double total = 0.0;
+};
+
+Expected<Cumulative> cumulative_lengths(Quadrature& quadrature, Interval domain, double tolerance) {
+  Cumulative result;
+  for (std::size_t k = 0; k < quadrature.size(); ++k) {
+    const Interval span = quadrature.span(k);
+    auto piece = quadrature.integrate(k, 0.0, 1.0, tolerance * (span.length() / domain.length()));
+    if (!piece) return piece.error();
+    result.before.push_back(result.total);
+    result.lengths.push_back(*piece);
+    result.total += *piece;
+  }
+  return result;
+}
+
+/// The global parameter at which the length from the start is s (0 <= s <= total),
+/// |L - s| <= tolerance: the piece from the running sums, then safeguarded
+/// Newton on g(t) = L(piece start, t) - r inside it (each L within tolerance / 4).
+Expected<double> solve_for_length(Quadrature& quadrature, const Cumulative& sums, double s, double tolerance) {
+  std::size_t k = 0;
+  while (k + 1 < sums.lengths.size() && sums.before[k] + sums.lengths[k] < s) ++k;
+  const Interval span = quadrature.span(k);
+  const double r = std::clamp(s - sums.before[k], 0.0, sums.lengths[k]);
+  if (sums.lengths[k] == 0.0) return span.lower;
+  double lo = 0.0, hi = 1.0, t = r / sums.lengths[k];
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    auto length = quadrature.integrate(k, 0.0, t, tolerance / 4);
+    if (!length) return length.error();
+    const double g = *length - r;
+    if (std::abs(g) <= tolerance / 4) break;
+    (g < 0.0 ? lo : hi) = t;
+    const double speed = quadrature.speed(k).at(t);
+    double next = speed > 0.0 ? t - g / speed : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (next == t || !(lo < hi)) break;  // the bracket is down to one ulp
+    t = next;
+  }
+  return span.lerp(t);
+}
+
+}  // namespace
+
+Expected<double> arc_length(CurveView curve, Tolerance tolerance) {
+  return arc_length(curve, curve.domain(), tolerance);
+}
+
+Expected<double> arc_length(CurveView curve, Interval range, Tolerance tolerance) {
+  if (auto ok = check_tolerance(curve, tolerance); !ok) return ok.error();
+  if (auto ok = check_range(curve, range); !ok) return ok.error();
+  Quadrature quadrature(curve);
+  return length_over(quadrature, range, tolerance.distance);
+}
+
+Expected<double> parameter_at_length(CurveView curve, double length, Tolerance tolerance) {
+  if (auto ok = check_tolerance(curve, tolerance); !ok) return ok.error();
+  if (auto ok = check_finite(length, "the length"); !ok) return ok.error();
+  Quadrature quadrature(curve);
+  auto sums = cumulative_lengths(quadrature, curve.domain(), tolerance.distance / 4);
+  if (!sums) return sums.error();
+  if (length < 0.0 || length > sums->total + tolerance.distance)
+    return Error{"the length " + number_text(length) + " is outside [0, " + number_text(sums->total) +
+                 "], the curve's length"};
+  if (length >= sums->total) return curve.domain().upper;
+  return solve_for_length(quadrature, *sums, length, tolerance.distance);
+}
+
+Expected<std::vector<double>> equal_arc_length_parameters(CurveView curve, std::size_t count, Tolerance tolerance) {
+  if (count < 2 || count > tolerances::kMaxInputValues)
+    return Error{"the number of equal-arc-length samples is " + std::to_string(count) + ", it must lie in 2.." +
+                 std::to_string(tolerances::kMaxInputValues)};
+  if (auto ok = check_tolerance(curve, tolerance); !ok) return ok.error();
+  Quadrature quadrature(curve);
+  const Interval domain = curve.domain();
+  auto sums = cumulative_lengths(quadrature, domain, tolerance.distance / 4);
+  if (!sums) return sums.error();
+  std::vector<double> result{domain.lower};
+  for (std::size_t i = 1; i + 1 < count; ++i) {
+    const double s = sums->total * (static_cast<double>(i) / static_cast<double>(count - 1));
+    auto u = solve_for_length(quadrature, *sums, s, tolerance.distance);
+    if (!u) return u.error();
+    result.push_back(std::max(*u, result.back()));
+  }
+  result.push_back(domain.upper);
+  return result;
+}
+
+Tolerance default_arc_length_tolerance(CurveView curve) {
+  const double size = size_of(curve);
+  return Tolerance{size > 0.0 ? tolerances::kDefaultArcLengthRelativeTolerance * size : 1.0};
+}
+
+}  // namespace casteljau

@@ -1,0 +1,183 @@
+// Arc length, its inverse and equal-arc-length sampling against closed forms:
+// straight lines (one uneven parameterization among them), the parabola
+// y = x^2 (L = [x sqrt(1+4x^2)/2 + asinh(2x)/4]), the semicubical parabola
+// (s^2, s^3) with its cusp (L = 2 ((13)^(3/2) - 8) / 27), the NURBS circle and
+// arcs (R x angle), each at every requested accuracy from 1e-1 to 1e-13 of
+// the curve's size, and on every curve kind. The ellipse against scipy's
+// complete elliptic integral is in tests/python/test_module_arc_length.py.
+#include "casteljau/ops/arc_length.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "casteljau/bezier/split.hpp"
+#include "casteljau/bspline/bspline_curve.hpp"
+#include "casteljau/nurbs/conics.hpp"
+#include "support/bspline_generators.hpp"
+
+namespace casteljau {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+BezierCurve bezier(const std::vector<std::vector<double>>& points, std::vector<double> weights = {}) {
+  return BezierCurve::make(PointArray::make(points).value(), std::move(weights)).value();
+}
+
+/// Length of y = x^2 from 0 to x.
+double parabola_length(double x) { return 0.5 * x * std::sqrt(1 + 4 * x * x) + 0.25 * std::asinh(2 * x); }
+
+struct ExactCase {
+  const char* name;
+  BSplineCurve curve;  // every kind becomes a B-spline here; the kinds are compared below
+  double length;
+};
+
+std::vector<ExactCase> exact_cases() {
+  std::vector<ExactCase> cases;
+  cases.push_back({"segment (0,0)-(3,4)", to_bspline(bezier({{0, 0}, {3, 4}})), 5.0});
+  // The same segment with control points bunched unevenly (monotone: still 5).
+  cases.push_back({"uneven straight cubic", to_bspline(bezier({{0, 0}, {0.3, 0.4}, {2.1, 2.8}, {3, 4}})), 5.0});
+  // x = 2t, y = 4t^2: y = x^2 on [0, 2].
+  cases.push_back({"parabola", to_bspline(bezier({{0, 0}, {1, 0}, {2, 4}})), parabola_length(2.0)});
+  // (s^2, s^3), s = 2t - 1: a cusp at t = 1/2.
+  cases.push_back({"semicubical cusp", to_bspline(bezier({{1, -1}, {-1.0 / 3, 1}, {-1.0 / 3, -1}, {1, 1}})),
+                   2 * (std::pow(13.0, 1.5) - 8) / 27});
+  cases.push_back({"circle R = 3", make_circle(1.0, 2.0, 3.0).value(), 2 * kPi * 3.0});
+  cases.push_back({"arc of 100 degrees", make_arc(0.0, 0.0, 2.0, 0.3, 100.0 * kPi / 180).value(), 2.0 * 100.0 * kPi / 180});
+  cases.push_back({"arc of 300 degrees", make_arc(0.0, 0.0, 0.5, -1.0, 300.0 * kPi / 180).value(), 0.5 * 300.0 * kPi / 180});
+  return cases;
+}
+
+TEST(ArcLength, MeetsEveryRequestedAccuracyOnExactCases) {
+  for (const ExactCase& c : exact_cases()) {
+    const double size = size_of(c.curve);
+    double worst_ratio = 0.0;
+    for (int k = 1; k <= 13; ++k) {
+      const double tolerance = std::pow(10.0, -k) * size;
+      const auto length = arc_length(c.curve, Tolerance{tolerance});
+      ASSERT_TRUE(length.has_value()) << c.name << ": " << length.error().message;
+      const double error = std::abs(*length - c.length);
+      EXPECT_LE(error, tolerance) << c.name << " at 1e-" << k << " of the size";
+      worst_ratio = std::max(worst_ratio, error / tolerance);
+    }
+    std::printf("arc length %-22s largest error / requested accuracy over 1e-1..1e-13: %.2g\n", c.name, worst_ratio);
+  }
+}
+
+TEST(ArcLength, EveryKindGivesTheSameLength) {
+  // The parabola as a Bézier curve, as a B-spline, and as a piecewise curve of its halves.
+  const BezierCurve parabola = bezier({{0, 0}, {1, 0}, {2, 4}});
+  const auto halves = split_at(parabola, 0.25).value();
+  const PiecewiseBezierCurve piecewise = PiecewiseBezierCurve::make({halves.first, halves.second}).value();
+  const BSplineCurve as_bspline = to_bspline(parabola);  // named: a view must not outlive its curve
+  for (const CurveView view : {CurveView(parabola), CurveView(as_bspline), CurveView(piecewise)})
+    EXPECT_NEAR(arc_length(view, Tolerance{1e-13}).value(), parabola_length(2.0), 1e-13);
+  // A rational Bézier quarter circle of radius 2.
+  const BezierCurve quarter = bezier({{2, 0}, {2, 2}, {0, 2}}, {1, std::sqrt(0.5), 1});
+  EXPECT_NEAR(arc_length(quarter, Tolerance{1e-13}).value(), kPi, 1e-13);
+  // A single point has length 0.
+  EXPECT_EQ(arc_length(bezier({{1, 1}, {1, 1}}), Tolerance{1e-9}).value(), 0.0);
+}
+
+TEST(ArcLength, OfASubInterval) {
+  const BezierCurve parabola = bezier({{0, 0}, {1, 0}, {2, 4}});  // x = 2t
+  EXPECT_NEAR(arc_length(parabola, Interval{0.25, 0.75}, Tolerance{1e-13}).value(),
+              parabola_length(1.5) - parabola_length(0.5), 1e-13);
+  EXPECT_EQ(arc_length(parabola, Interval{0.5, 0.5}, Tolerance{1e-13}).value(), 0.0);
+  // Across the knots of the circle (its quarter arcs are pieces).
+  const BSplineCurve circle = make_circle(0.0, 0.0, 1.0).value();
+  const Interval domain = circle.domain();
+  const double half = arc_length(circle, Interval{domain.lower, domain.lerp(0.5)}, Tolerance{1e-13}).value();
+  EXPECT_NEAR(half, kPi, 1e-13);
+}
+
+TEST(ArcLength, ParameterAtLengthInvertsIt) {
+  const BezierCurve parabola = bezier({{0, 0}, {1, 0}, {2, 4}});
+  const double total = parabola_length(2.0);
+  for (double fraction : {0.0, 0.1, 0.37, 0.5, 0.9, 1.0}) {
+    const double s = fraction * total;
+    const double u = parameter_at_length(parabola, s, Tolerance{1e-12}).value();
+    EXPECT_NEAR(parabola_length(2 * u), s, 1e-12) << fraction;
+  }
+  // A line of uniform speed: u = s / 5 to rounding.
+  const BezierCurve line = bezier({{0, 0}, {3, 4}});
+  EXPECT_NEAR(parameter_at_length(line, 2.0, Tolerance{1e-12}).value(), 0.4, 1e-13);
+  // Through the cusp: half the length is the cusp itself, t = 1/2.
+  const BezierCurve cusp = bezier({{1, -1}, {-1.0 / 3, 1}, {-1.0 / 3, -1}, {1, 1}});
+  const double cusp_length = 2 * (std::pow(13.0, 1.5) - 8) / 27;
+  EXPECT_NEAR(parameter_at_length(cusp, cusp_length / 2, Tolerance{1e-12}).value(), 0.5, 1e-6);
+}
+
+TEST(ArcLength, EqualArcLengthSamplesOfTheCircleAreEquallySpaced) {
+  const double radius = 3.0;
+  const BSplineCurve circle = make_circle(1.0, 2.0, radius).value();
+  const int n = 13;
+  const auto us = equal_arc_length_parameters(circle, n, Tolerance{1e-11}).value();
+  ASSERT_EQ(us.size(), static_cast<std::size_t>(n));
+  EXPECT_EQ(us.front(), circle.domain().lower);
+  EXPECT_EQ(us.back(), circle.domain().upper);
+  const double chord = 2 * radius * std::sin(kPi / (n - 1));
+  for (int i = 0; i + 1 < n; ++i) {
+    EXPECT_LT(us[i], us[i + 1]);
+    EXPECT_NEAR(distance(point_at(circle, us[i]), point_at(circle, us[i + 1])), chord, 1e-10) << i;
+  }
+}
+
+/// Invariants on random B-splines and NURBS (every kind reaches the same
+/// quadrature through its Bézier pieces): the chord is the shortest path, the
+/// control polygons of the pieces the longest (the convex hull property of
+/// their hodographs' integral), and length adds up across a split.
+/// The value, or the property fails with the error's message.
+template <class T>
+T checked(Expected<T> result) {
+  if (!result) RC_FAIL(result.error().message);
+  return *result;
+}
+
+RC_GTEST_PROP(ArcLength, LiesBetweenChordAndPolygonAndAddsUp, ()) {
+  const BSplineCurve curve = *test::bspline_curve({.max_degree = 5});
+  const double tolerance = 1e-9 * std::max(1.0, size_of(curve));
+  const double length = checked(arc_length(curve, Tolerance{tolerance}));
+  const Interval domain = curve.domain();
+  RC_ASSERT(distance(point_at(curve, domain.lower), point_at(curve, domain.upper)) <= length + tolerance);
+  double polygon = 0.0;
+  for (const BezierCurve& piece : to_bezier_pieces(curve).pieces)
+    for (std::size_t i = 0; i + 1 < piece.control_points().size(); ++i)
+      polygon += distance(piece.control_points()[i], piece.control_points()[i + 1]);
+  RC_ASSERT(length <= polygon + tolerance);
+  const double u = domain.lerp(*rc::gen::inRange(1, 1000) * 1e-3);
+  const double left = checked(arc_length(curve, Interval{domain.lower, u}, Tolerance{tolerance}));
+  const double right = checked(arc_length(curve, Interval{u, domain.upper}, Tolerance{tolerance}));
+  RC_ASSERT(std::abs(left + right - length) <= 3 * tolerance);
+  // The inverse lands where the length says.
+  const double back = checked(parameter_at_length(curve, left, Tolerance{tolerance}));
+  RC_ASSERT(std::abs(checked(arc_length(curve, Interval{domain.lower, back}, Tolerance{tolerance})) - left) <=
+            3 * tolerance);
+}
+
+TEST(ArcLength, RefusesBadRequestsNamingThem) {
+  const BezierCurve parabola = bezier({{0, 0}, {1, 0}, {2, 4}});
+  EXPECT_EQ(arc_length(parabola, Tolerance{0.0}).error().message,
+            "the arc-length tolerance is 0, it must be finite and > 0");
+  EXPECT_EQ(arc_length(parabola, Tolerance{NAN}).error().message,
+            "the arc-length tolerance is nan, it must be finite and > 0");
+  EXPECT_EQ(arc_length(parabola, Tolerance{1e-15}).error().message.substr(0, 40),
+            "the arc-length tolerance 1e-15 is below ");
+  EXPECT_EQ(arc_length(parabola, Interval{-0.5, 0.5}, Tolerance{1e-9}).error().message,
+            "the arc-length range's start -0.5 is outside the domain [0, 1]");
+  EXPECT_EQ(arc_length(parabola, Interval{0.75, 0.25}, Tolerance{1e-9}).error().message,
+            "the arc-length range [0.75, 0.25] runs backwards");
+  EXPECT_EQ(parameter_at_length(parabola, -1.0, Tolerance{1e-9}).error().message.substr(0, 31),
+            "the length -1 is outside [0, 4.");
+  EXPECT_FALSE(parameter_at_length(parabola, 100.0, Tolerance{1e-9}).has_value());
+  EXPECT_EQ(equal_arc_length_parameters(parabola, 1, Tolerance{1e-9}).error().message.substr(0, 46),
+            "the number of equal-arc-length samples is 1, i");
+}
+
+}  // namespace
+}  // namespace casteljau
