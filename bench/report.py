@@ -66,6 +66,7 @@ fractions are lower by nature.
 | W4 (per fit of n points) | 15 per point | 24 per point | the tridiagonal sweep and back substitution for 3 coordinates; the limit is a time, max(FMA time, store time) |
 | W5 (grid) | 13 | 24 | the tensor product separates on a grid: 4 × 3 FMAs per point, the row stage (1.2 per point) shared by the 1000 points of a row |
 | W6 | | | the optimum segment count with vertices on the curve: fraction = optimum ÷ segments |
+| W9 | | | no hardware limit is stated: the quadrature's node count depends on the curve; rows report error_rel against the oracle |
 """
 
 
@@ -527,6 +528,7 @@ WORKLOAD_TITLES = OrderedDict(
     W4="W4: C² cubic interpolation of n 3D points, time per fit",
     W5="W5: bicubic B-spline surface (100 × 100 net) on a 1000 × 1000 grid",
     W6="W6: flattening a cubic Bézier spanning 100 units within 0.01",
+    W9="W9: arc length of W1's curve (997 cubic spans in 3D) within 1e-9 relative, time per length",
 )
 
 

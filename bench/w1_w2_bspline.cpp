@@ -30,6 +30,7 @@
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
 #include "all_cores.hpp"
+#include "w1_curve.hpp"
 #include "support/splitmix.hpp"
 
 #if defined(CASTELJAU_HAVE_GMP)
@@ -59,11 +60,11 @@ namespace {
 
 using casteljau::BSplineCurve;
 
-constexpr int kDegree = 3;
-constexpr std::size_t kControlPoints = 1000;
+constexpr int kDegree = casteljau::bench::kW1Degree;
+constexpr std::size_t kControlPoints = casteljau::bench::kW1ControlPoints;
 constexpr std::size_t kParameters = 1'000'000;
 constexpr std::size_t kCheckStride = 1000;
-constexpr double kScale = 100.0;
+constexpr double kScale = casteljau::bench::kW1Scale;
 /// Far above rounding (1e-13 of the scale), far below any wrong answer.
 constexpr double kRelativeBound = 1e-9;
 
@@ -78,11 +79,9 @@ struct Data {
 };
 
 Data make_data() {
-  Random control_random{20261122u};
-  std::vector<double> control(kControlPoints * 3);
-  for (double& x : control) x = kScale * control_random.unit();
+  std::vector<double> control = casteljau::bench::w1_control_points();
   std::vector<double> knots = casteljau::clamped_uniform_knots(kDegree, kControlPoints);
-  BSplineCurve curve = BSplineCurve::from_trusted(kDegree, knots, casteljau::PointArray::from_trusted(3, control));
+  BSplineCurve curve = casteljau::bench::w1_curve();
   Random parameter_random{4242u};
   std::vector<double> random(kParameters);
   for (double& u : random) u = parameter_random.unit();

@@ -4,6 +4,7 @@
 // first failure stops the gallery with its message.
 // Internal to src/render.
 
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,5 +35,10 @@ inline Status append_figure(std::vector<GalleryFigure>& figures, Expected<Galler
 /// surface local control, the NURBS sphere and torus, a tessellation at two
 /// tolerances. The first failure stops them with its message.
 Expected<std::vector<GalleryFigure>> surface_gallery_figures();
+
+/// The figures of the questions asked of curves (issue 16; gallery_interpolation.cpp,
+/// from 35): equal-parameter against equal-arc-length samples on the head.
+/// Errors: a missing or malformed head.csv in `examples_dir`.
+Expected<std::vector<GalleryFigure>> query_gallery_figures(const std::filesystem::path& examples_dir);
 
 }  // namespace casteljau::render::detail

@@ -423,6 +423,7 @@ std::span<const GallerySection> gallery_sections() {
       {30, 34,
        "surfaces: a bicubic Bézier patch, Coons patches with both blendings, B-spline surface local control, the NURBS "
        "sphere and torus, a tessellation at two tolerances"},
+      {35, 35, "questions asked of a curve: equal-parameter against equal-arc-length samples on the head"},
   };
   return kSections;
 }
@@ -485,6 +486,9 @@ Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path
   auto surfaces = detail::surface_gallery_figures();
   if (!surfaces) return surfaces.error();
   for (auto& f : *surfaces) figures.push_back(std::move(f));
+  auto queries = detail::query_gallery_figures(examples_dir);
+  if (!queries) return queries.error();
+  for (auto& f : *queries) figures.push_back(std::move(f));
   return figures;
 }
 

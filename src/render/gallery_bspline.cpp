@@ -3,7 +3,6 @@
 // multiplicity against continuity, the NURBS circle and the pull of one
 // weight. Every curve goes through to_bezier_pieces and the certified
 // flattening (bspline_plots.hpp), like the Bézier figures.
-#include "casteljau/curves/differential_geometry.hpp"
 #include "casteljau/render/gallery.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "figure_list.hpp"
@@ -21,6 +20,7 @@
 #include "casteljau/nurbs/conics.hpp"
 #include "casteljau/render/bspline_plots.hpp"
 #include "casteljau/render/plots.hpp"
+#include "casteljau/curves/differential_geometry.hpp"
 
 
 namespace casteljau::render {

@@ -31,6 +31,7 @@
 #include "casteljau/interpolation/parameterization.hpp"
 #include "casteljau/interpolation/spline_interpolation.hpp"
 #include "casteljau/io/csv.hpp"
+#include "casteljau/ops/arc_length.hpp"
 #include "casteljau/render/bspline_plots.hpp"
 #include "casteljau/render/plots.hpp"
 
@@ -167,6 +168,57 @@ Expected<GalleryFigure> interpolants_figure(const PointArray& data, const std::s
                   "the curve. Right: the closed C² cubic spline (periodic end condition, centripetal parameters) "
                   "with its B-spline control polygon. Measured: {}.",
                   set, data.size(), measured),
+      std::move(figure)};
+}
+
+// --- equal parameter vs equal arc length on the head (issue 16) -----------------------
+
+/// Ratio of the longest to the shortest chord between consecutive samples.
+double chord_spread(const PiecewiseBezierCurve& curve, std::span<const double> us) {
+  double shortest = INFINITY, longest = 0.0;
+  for (std::size_t i = 0; i + 1 < us.size(); ++i) {
+    const double chord = distance(point_at(curve, us[i]), point_at(curve, us[i + 1]));
+    shortest = std::min(shortest, chord), longest = std::max(longest, chord);
+  }
+  return longest / shortest;
+}
+
+Expected<GalleryFigure> arc_length_samples_figure(const PointArray& data) {
+  constexpr std::size_t kSamples = 80;
+  auto curve = interpolate_c1_bezier(data, 2.0);
+  if (!curve) return curve.error();
+  const Interval domain = curve->domain();
+  std::vector<double> uniform(kSamples);
+  for (std::size_t i = 0; i < kSamples; ++i) uniform[i] = domain.lerp(static_cast<double>(i) / (kSamples - 1));
+  auto spaced = equal_arc_length_parameters(*curve, kSamples, default_arc_length_tolerance(*curve));
+  if (!spaced) return spaced.error();
+  auto length = arc_length(*curve, default_arc_length_tolerance(*curve));
+  if (!length) return length.error();
+  Figure figure = figure_of("The head's C¹ curve sampled at equal parameter steps and at equal arc-length steps", 1500,
+                            620, 2);
+  for (const auto& [us, title] : {std::pair{&uniform, "80 equal steps in the parameter u"},
+                                  std::pair{&*spaced, "80 equal steps in arc length"}}) {
+    Panel panel;
+    panel.equal_aspect = true;
+    panel.title = fmt::format("{} (longest / shortest chord {:.2f})", title, chord_spread(*curve, *us));
+    add_pieces(panel, *curve, false, colors::gray, "C¹ curve, α = 2");
+    std::vector<Vec2> samples;
+    for (const double u : *us) {
+      const Point p = point_at(*curve, u);
+      samples.push_back(Vec2{{p[0], p[1]}});
+    }
+    panel.markers.push_back({std::move(samples), cycle_color(0), 5.0 * kPixelsPerPoint, "samples"});
+    panel.legend = LegendPlace::none;
+    figure.panels.push_back(std::move(panel));
+  }
+  return GalleryFigure{
+      "35_head_arc_length_samples",
+      fmt::format("The head's C¹ Bézier curve (α = 2, {} pieces, length {:.6g}) sampled at 80 points. Left: equal steps "
+                  "in the parameter, which crowd where the pieces are short and spread where they are long (each piece "
+                  "spans one unit of u whatever its size). Right: equal steps in arc length (equal_arc_length_parameters, "
+                  "each length within 1e-12 of the size: ops/arc_length.hpp), the spacing a CNC feed or a dashed line "
+                  "needs. Measured: longest / shortest chord {:.2f} against {:.3f}.",
+                  curve->size(), *length, chord_spread(*curve, uniform), chord_spread(*curve, *spaced)),
       std::move(figure)};
 }
 
@@ -551,5 +603,17 @@ Expected<std::vector<GalleryFigure>> interpolation_gallery_figures(const std::fi
   }
   return figures;
 }
+
+namespace detail {
+
+Expected<std::vector<GalleryFigure>> query_gallery_figures(const std::filesystem::path& examples_dir) {
+  auto head = read_plane_points(examples_dir, "head.csv");
+  if (!head) return head.error();
+  std::vector<GalleryFigure> figures;
+  if (auto ok = append_figure(figures, arc_length_samples_figure(*head)); !ok) return ok.error();
+  return figures;
+}
+
+}  // namespace detail
 
 }  // namespace casteljau::render

@@ -1,4 +1,3 @@
-#include "casteljau/curves/differential_geometry.hpp"
 #include "casteljau/render/plots.hpp"
 
 #include <fmt/format.h>
@@ -12,6 +11,7 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/render/bspline_plots.hpp"
 #include "casteljau/render/layout.hpp"
+#include "casteljau/curves/differential_geometry.hpp"
 
 namespace casteljau::render {
 namespace {

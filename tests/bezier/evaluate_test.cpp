@@ -1,7 +1,7 @@
 // Evaluation and derivatives against exact arithmetic (support/exact.hpp),
 // the seed notebook's worked example, and finite differences.
-#include "casteljau/curves/differential_geometry.hpp"
 #include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/curves/differential_geometry.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
