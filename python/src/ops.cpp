@@ -21,6 +21,7 @@
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/curves/curve_view.hpp"
 #include "casteljau/ops/arc_length.hpp"
+#include "casteljau/ops/bounds.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/tessellate.hpp"
@@ -226,6 +227,15 @@ void bind_ops(py::module_& module) {
         "(default 1e-12 of the curve's size): adaptive Gauss-Kronrod quadrature on its Bézier pieces, the accuracy "
         "met, not estimated (ops/arc_length.hpp). ValueError for a tolerance not > 0 or below 1e-14 of the size, a "
         "range outside the domain or backwards. The GIL is released.");
+    module.def(
+        "bounding_box",
+        [](const Kind& curve) {
+          const Box box = bounding_box(CurveView(curve));
+          return py::make_tuple(to_numpy(box.lower), to_numpy(box.upper));
+        },
+        py::arg("curve"),
+        "The tight axis-aligned box of the curve as (lower (d,), upper (d,)): its end points and the points where a "
+        "coordinate's derivative vanishes (roots in Bernstein form), not the control polygon's box.");
     module.def(
         "parameter_at_length",
         [](const Kind& curve, double length, const py::object& tolerance) {

@@ -66,3 +66,11 @@ def test_errors_are_value_errors_that_say_what():
         cj.parameter_at_length(line, 6.0)
     with pytest.raises(ValueError, match="at least 2"):
         cj.equal_arc_length_parameters(line, 1)
+
+
+def test_bounding_box_of_the_circle_and_a_parabola():
+    lower, upper = cj.bounding_box(cj.make_circle((1.0, -2.0), 3.0))
+    np.testing.assert_allclose(lower, [-2.0, -5.0], atol=1e-14)
+    np.testing.assert_allclose(upper, [4.0, 1.0], atol=1e-14)
+    lower, upper = cj.bounding_box(cj.BezierCurve([[0, 0], [1, 2], [2, 0]]))  # the polygon reaches y = 2
+    np.testing.assert_allclose(upper, [2.0, 1.0], atol=1e-15)
