@@ -22,6 +22,7 @@
 #include "casteljau/curves/curve_view.hpp"
 #include "casteljau/ops/arc_length.hpp"
 #include "casteljau/ops/bounds.hpp"
+#include "casteljau/ops/inflections.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/tessellate.hpp"
@@ -236,6 +237,14 @@ void bind_ops(py::module_& module) {
         py::arg("curve"),
         "The tight axis-aligned box of the curve as (lower (d,), upper (d,)): its end points and the points where a "
         "coordinate's derivative vanishes (roots in Bernstein form), not the control polygon's box.");
+    module.def(
+        "inflection_parameters",
+        [](const Kind& curve) {
+          return to_numpy(std::span<const double>(unwrap(inflection_parameters(CurveView(curve)))));
+        },
+        py::arg("curve"),
+        "The parameters where a plane curve's signed curvature changes sign, increasing, as a (k,) array (roots of "
+        "det[A, A', A''] per Bézier piece; flat points excluded). ValueError unless d == 2.");
     module.def(
         "parameter_at_length",
         [](const Kind& curve, double length, const py::object& tolerance) {

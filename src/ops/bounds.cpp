@@ -8,35 +8,24 @@
 #include "casteljau/bezier/bernstein_roots.hpp"
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
+#include "bernstein_columns.hpp"
 
 namespace casteljau {
 namespace {
 
-/// Coordinate j of the points as Bernstein coefficients (homogeneous: w P_j).
-std::vector<double> coordinate(const PointArray& points, int j) {
-  std::vector<double> values(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) values[i] = points[i][j];
-  return values;
-}
-
-/// n (b_{i+1} - b_i): the derivative's Bernstein coefficients.
-std::vector<double> differences(const std::vector<double>& b) {
-  const double n = static_cast<double>(b.size() - 1);
-  std::vector<double> d(b.size() > 1 ? b.size() - 1 : 1, 0.0);
-  for (std::size_t i = 0; i + 1 < b.size(); ++i) d[i] = n * (b[i + 1] - b[i]);
-  return d;
-}
+using detail::column;
+using detail::derivative;
 
 /// The parameters in (0, 1) where coordinate j of the piece has a zero derivative.
 std::vector<double> stationary_parameters(const BezierCurve& piece, int j) {
   std::vector<double> numerator;
   if (!piece.is_rational()) {
-    numerator = differences(coordinate(piece.control_points(), j));
+    numerator = derivative(column(piece.control_points(), j));
   } else {
     const PointArray h = homogeneous_points(piece);
     const int d = piece.dimension();
-    const std::vector<double> a = coordinate(h, j), w = coordinate(h, d);
-    const std::vector<double> left = bernstein_product(differences(a), w), right = bernstein_product(a, differences(w));
+    const std::vector<double> a = column(h, j), w = column(h, d);
+    const std::vector<double> left = bernstein_product(derivative(a), w), right = bernstein_product(a, derivative(w));
     numerator.resize(left.size());
     for (std::size_t i = 0; i < left.size(); ++i) numerator[i] = left[i] - right[i];
   }

@@ -74,3 +74,12 @@ def test_bounding_box_of_the_circle_and_a_parabola():
     np.testing.assert_allclose(upper, [4.0, 1.0], atol=1e-14)
     lower, upper = cj.bounding_box(cj.BezierCurve([[0, 0], [1, 2], [2, 0]]))  # the polygon reaches y = 2
     np.testing.assert_allclose(upper, [2.0, 1.0], atol=1e-15)
+
+
+def test_inflections_of_a_cubic_graph_and_errors():
+    # x = t, y = (t - 1/2)^3 in Bernstein form: the inflection is at t = 1/2.
+    s_curve = cj.BezierCurve([[0, -0.125], [1 / 3, 0.125], [2 / 3, -0.125], [1, 0.125]])
+    np.testing.assert_allclose(cj.inflection_parameters(s_curve), [0.5], atol=1e-15)
+    assert cj.inflection_parameters(cj.make_circle((0, 0), 1.0)).size == 0
+    with pytest.raises(ValueError, match="plane curve"):
+        cj.inflection_parameters(cj.BezierCurve([[0, 0, 0], [1, 1, 1], [2, 0, 1]]))
