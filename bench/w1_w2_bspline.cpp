@@ -225,30 +225,8 @@ void run_eigen(const std::vector<double>& us, double* points, double* derivative
 // --- OpenCASCADE 7.6 ------------------------------------------------------------------
 
 #if defined(CASTELJAU_HAVE_OCCT)
-struct Occt {
-  TColgp_Array1OfPnt poles;
-  TColStd_Array1OfReal knots;
-  TColStd_Array1OfInteger mults;
-  Handle(Geom_BSplineCurve) curve;
-  Occt() : poles(1, static_cast<int>(kControlPoints)), knots(1, static_cast<int>(kControlPoints) - kDegree + 1),
-           mults(1, static_cast<int>(kControlPoints) - kDegree + 1) {
-    for (int i = 0; i < static_cast<int>(kControlPoints); ++i) {
-      const double* q = data().control.data() + 3 * i;
-      poles.SetValue(i + 1, gp_Pnt(q[0], q[1], q[2]));
-    }
-    // The distinct knots and their multiplicities (clamped: p+1 at the ends).
-    const int distinct = static_cast<int>(kControlPoints) - kDegree + 1;
-    for (int i = 0; i < distinct; ++i) {
-      knots.SetValue(i + 1, data().knots[static_cast<std::size_t>(kDegree + i)]);
-      mults.SetValue(i + 1, (i == 0 || i == distinct - 1) ? kDegree + 1 : 1);
-    }
-    curve = new Geom_BSplineCurve(poles, knots, mults, kDegree);
-  }
-};
-Occt& occt() {
-  static Occt o;
-  return o;
-}
+using Occt = casteljau::bench::OcctW1;
+const Occt& occt() { return casteljau::bench::occt_w1(); }
 
 /// GeomAdaptor_Curve::D0 / D1: OpenCASCADE's cached evaluation (per-span
 /// power-basis cache, rebuilt when the parameter leaves the cached span).
@@ -298,14 +276,7 @@ void run_occt_bsplclib(const std::vector<double>& us, double* points, double* de
 // --- SISL 4.6 -----------------------------------------------------------------------------
 
 #if defined(CASTELJAU_HAVE_SISL)
-SISLCurve* sisl_curve() {
-  static SISLCurve* curve = [] {
-    std::vector<double> knots = data().knots, control = data().control;
-    // newCurve with icopy = 1 copies the arrays; kind 1: polynomial B-spline.
-    return newCurve(static_cast<int>(kControlPoints), kDegree + 1, knots.data(), control.data(), 1, 3, 1);
-  }();
-  return curve;
-}
+SISLCurve* sisl_curve() { return casteljau::bench::sisl_w1(); }
 
 /// s1221: value and derivatives from the right, with the span hint ileft
 /// carried from one parameter to the next (as a sorted caller would).

@@ -23,21 +23,11 @@
 #if defined(CASTELJAU_HAVE_OCCT)
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GeomAdaptor_Curve.hxx>
-#include <Geom_BSplineCurve.hxx>
-#include <TColStd_Array1OfInteger.hxx>
-#include <TColStd_Array1OfReal.hxx>
-#include <TColgp_Array1OfPnt.hxx>
-#endif
-
-#if defined(CASTELJAU_HAVE_SISL)
-#include <sisl.h>
 #endif
 
 namespace {
 
 using casteljau::BSplineCurve;
-using casteljau::bench::kW1ControlPoints;
-using casteljau::bench::kW1Degree;
 
 constexpr double kRelativeAccuracy = 1e-9;
 
@@ -52,29 +42,11 @@ double casteljau_length(double relative) {
 }
 
 #if defined(CASTELJAU_HAVE_OCCT)
-const Handle(Geom_BSplineCurve) & occt_curve() {
-  static const Handle(Geom_BSplineCurve) c = [] {
-    const int n = static_cast<int>(kW1ControlPoints), distinct = n - kW1Degree + 1;
-    TColgp_Array1OfPnt poles(1, n);
-    const std::vector<double> control = casteljau::bench::w1_control_points();
-    for (int i = 0; i < n; ++i) poles.SetValue(i + 1, gp_Pnt(control[3 * i], control[3 * i + 1], control[3 * i + 2]));
-    TColStd_Array1OfReal knots(1, distinct);
-    TColStd_Array1OfInteger mults(1, distinct);
-    const auto all = curve().knots();
-    for (int i = 0; i < distinct; ++i) {
-      knots.SetValue(i + 1, all[static_cast<std::size_t>(kW1Degree + i)]);
-      mults.SetValue(i + 1, (i == 0 || i == distinct - 1) ? kW1Degree + 1 : 1);
-    }
-    return Handle(Geom_BSplineCurve)(new Geom_BSplineCurve(poles, knots, mults, kW1Degree));
-  }();
-  return c;
-}
-
 /// GCPnts_AbscissaPoint::Length(curve, tolerance): OpenCASCADE's arc length
 /// (Gauss integration per span, refined until the tolerance, relative to the
 /// length, is met).
 double occt_length(double relative) {
-  GeomAdaptor_Curve adaptor(occt_curve());
+  GeomAdaptor_Curve adaptor(casteljau::bench::occt_w1().curve);
   return GCPnts_AbscissaPoint::Length(adaptor, relative);
 }
 #endif
@@ -82,11 +54,7 @@ double occt_length(double relative) {
 #if defined(CASTELJAU_HAVE_SISL)
 /// s1240: SISL's curve length to a given absolute accuracy.
 double sisl_length(double relative) {
-  static SISLCurve* c = [] {
-    std::vector<double> knots(curve().knots().begin(), curve().knots().end());
-    std::vector<double> control = casteljau::bench::w1_control_points();
-    return newCurve(static_cast<int>(kW1ControlPoints), kW1Degree + 1, knots.data(), control.data(), 1, 3, 1);
-  }();
+  SISLCurve* c = casteljau::bench::sisl_w1();
   double length = NAN;
   int status = 0;
   s1240(c, relative * casteljau::size_of(curve()), &length, &status);

@@ -53,35 +53,38 @@ BezierPieces to_bezier_pieces(CurveView curve) {
   return curve.visit([](const auto& c) { return to_bezier_pieces(c); });
 }
 
-double scale_of(CurveView curve) {
-  struct Scale {
-    double operator()(const BezierCurve& c) const { return scale_of(c.control_points()); }
-    double operator()(const BSplineCurve& c) const { return scale_of(c.control_points()); }
-    double operator()(const PiecewiseBezierCurve& c) const {
-      double scale = 0.0;
-      for (const BezierCurve& piece : c.pieces()) scale = std::max(scale, scale_of(piece.control_points()));
-      return scale;
+namespace {
+
+/// f(points) for each control polygon of the curve: one for a Bézier curve or
+/// a B-spline, one per piece of a piecewise curve.
+template <class F>
+void for_each_control_polygon(CurveView curve, F&& f) {
+  struct Visit {
+    F& f;
+    void operator()(const BezierCurve& c) const { f(c.control_points()); }
+    void operator()(const BSplineCurve& c) const { f(c.control_points()); }
+    void operator()(const PiecewiseBezierCurve& c) const {
+      for (const BezierCurve& piece : c.pieces()) f(piece.control_points());
     }
   };
-  return curve.visit(Scale{});
+  curve.visit(Visit{f});
+}
+
+}  // namespace
+
+double scale_of(CurveView curve) {
+  double scale = 0.0;
+  for_each_control_polygon(curve, [&](const PointArray& points) { scale = std::max(scale, scale_of(points)); });
+  return scale;
 }
 
 double size_of(CurveView curve) {
   const int d = curve.dimension();
   std::vector<double> lower(d, INFINITY), upper(d, -INFINITY);
-  auto add = [&](const PointArray& points) {
+  for_each_control_polygon(curve, [&](const PointArray& points) {
     for (std::size_t i = 0; i < points.size(); ++i)
       for (int j = 0; j < d; ++j) lower[j] = std::min(lower[j], points[i][j]), upper[j] = std::max(upper[j], points[i][j]);
-  };
-  struct Add {
-    decltype(add)& to;
-    void operator()(const BezierCurve& c) const { to(c.control_points()); }
-    void operator()(const BSplineCurve& c) const { to(c.control_points()); }
-    void operator()(const PiecewiseBezierCurve& c) const {
-      for (const BezierCurve& piece : c.pieces()) to(piece.control_points());
-    }
-  };
-  curve.visit(Add{add});
+  });
   double sum = 0.0;
   for (int j = 0; j < d; ++j) sum += (upper[j] - lower[j]) * (upper[j] - lower[j]);
   return std::sqrt(sum);

@@ -51,7 +51,6 @@ class PieceSpeed {
  public:
   explicit PieceSpeed(const BezierCurve& piece) : dimension_(piece.dimension()), rational_(piece.is_rational()) {
     if (!rational_ && piece.degree() <= kPowerDegree + 1 && dimension_ <= kPowerDimension) {
-      power_degree_ = std::max(piece.degree() - 1, 0);
       const BezierCurve derivative = derivative_curve(piece).value();
       const PointArray& h = derivative.control_points();
       const int m = derivative.degree();
@@ -65,8 +64,8 @@ class PieceSpeed {
       power_degree_ = m;
       return;
     }
-    homogeneous_.emplace(rational_ ? BezierCurve::from_trusted(homogeneous_points(piece)) : piece);
-    derivative_.emplace(derivative_curve(*homogeneous_).value());
+    if (rational_) homogeneous_.emplace(BezierCurve::from_trusted(homogeneous_points(piece)));
+    derivative_.emplace(derivative_curve(rational_ ? *homogeneous_ : piece).value());
     scratch_.resize(static_cast<std::size_t>(2 * kNodes) * (dimension_ + 1));
   }
 
@@ -152,8 +151,8 @@ class PieceSpeed {
   bool rational_;
   int power_degree_ = -1;  // >= 0: the power form below is used
   std::array<double, kPowerDimension*(kPowerDegree + 1)> power_{};
-  std::optional<BezierCurve> homogeneous_;  // the other pieces: through the batch kernel
-  std::optional<BezierCurve> derivative_;
+  std::optional<BezierCurve> homogeneous_;  // rational pieces: A
+  std::optional<BezierCurve> derivative_;   // the other pieces: A' or C', through the batch kernel
   mutable std::vector<double> scratch_;
 };
 
