@@ -54,6 +54,8 @@ constexpr std::array kEntries{
           "a least-squares cubic B-spline with 10 control points near the head's points"},
     Entry{"length", "The arc length of curves, within a tolerance", "casteljau length examples/semicircle.json",
           "the length of the exact NURBS half circle of radius 3: 3 pi = 9.42477796076938"},
+    Entry{"closest", "The nearest point of a curve to query points", "casteljau closest examples/semicircle.json --point 0,5",
+          "the point of the half circle of radius 3 nearest to (0, 5): t = 0.5, distance 2, at (0, 3)"},
     Entry{"tessellate", "A triangle mesh of surfaces (OBJ, STL, PLY)",
           "casteljau tessellate examples/sphere.json --tolerance 0.001 -o sphere.stl",
           "a watertight triangle mesh within 0.001 of the NURBS sphere"},

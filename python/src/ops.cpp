@@ -22,6 +22,7 @@
 #include "casteljau/curves/curve_view.hpp"
 #include "casteljau/ops/arc_length.hpp"
 #include "casteljau/ops/bounds.hpp"
+#include "casteljau/ops/closest_point.hpp"
 #include "casteljau/ops/inflections.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/ops/mesh.hpp"
@@ -245,6 +246,49 @@ void bind_ops(py::module_& module) {
         py::arg("curve"),
         "The parameters where a plane curve's signed curvature changes sign, increasing, as a (k,) array (roots of "
         "det[A, A', A''] per Bézier piece; flat points excluded). ValueError unless d == 2.");
+    module.def(
+        "closest_point",
+        [](const Kind& curve, const py::object& point) {
+          const std::vector<double> query = values_from(point, "point");
+          const NearestPoint nearest = unwrap(closest_point(CurveView(curve), query));
+          return py::make_tuple(nearest.parameter, nearest.distance, to_numpy(nearest.point));
+        },
+        py::arg("curve"), py::arg("point"),
+        "The nearest point of the curve to `point` (d,): a tuple (parameter, distance, point (d,)), the global "
+        "minimum over the closed domain, ends and knots included; ties to the lowest parameter "
+        "(ops/closest_point.hpp). ValueError for a point of another dimension or not finite.");
+    module.def(
+        "closest_points",
+        [](const Kind& curve, const py::object& points) {
+          const PointArray queries = points_from(points, "points");
+          if (queries.dimension() != curve.dimension())
+            throw py::value_error(fmt::format("points has {} columns, the curve lives in R^{}", queries.dimension(),
+                                              curve.dimension()));
+          std::vector<double> parameters(queries.size()), distances(queries.size());
+          unwrap(without_gil([&] { return closest_points(CurveView(curve), queries.coordinates(), parameters, distances); }));
+          return py::make_tuple(to_numpy(std::span<const double>(parameters)), to_numpy(std::span<const double>(distances)));
+        },
+        py::arg("curve"), py::arg("points"),
+        "closest_point for each row of `points` (n, d), as (parameters (n,), distances (n,)); each answer starts "
+        "from the previous one's bound, so sorted or clustered queries run fastest. The GIL is released.");
+    module.def(
+        "local_closest_points",
+        [](const Kind& curve, const py::object& point) {
+          const std::vector<double> query = values_from(point, "point");
+          const std::vector<NearestPoint> minima = unwrap(local_closest_points(CurveView(curve), query));
+          std::vector<double> parameters, distances, coordinates;
+          for (const NearestPoint& m : minima) {
+            parameters.push_back(m.parameter);
+            distances.push_back(m.distance);
+            coordinates.insert(coordinates.end(), m.point.begin(), m.point.end());
+          }
+          return py::make_tuple(to_numpy(std::span<const double>(parameters)), to_numpy(std::span<const double>(distances)),
+                                to_numpy(PointArray::from_trusted(curve.dimension(), std::move(coordinates))));
+        },
+        py::arg("curve"), py::arg("point"),
+        "Every local minimum of the distance from `point` along the curve, the global one first, then by "
+        "parameter: (parameters (k,), distances (k,), points (k, d)). Ends count when the distance grows away "
+        "from them, corners when it falls into them from both sides.");
     module.def(
         "parameter_at_length",
         [](const Kind& curve, double length, const py::object& tolerance) {

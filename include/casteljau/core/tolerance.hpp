@@ -52,6 +52,17 @@ inline constexpr double kDefaultArcLengthRelativeTolerance = 1e-12;
 /// than computed for minutes.
 inline constexpr long kMaxArcLengthIntervals = 1L << 22;
 
+/// Rounding of a squared distance |C - q|^2 built from Bernstein
+/// coefficients (ops/closest_point): each of its 2n + 1 coefficients sums
+/// products of coordinate differences, exact to a few ulps of the largest
+/// one. Candidates whose squared distances differ by less than this times
+/// (2n + 1) times the largest coefficient are not told apart by the bound:
+/// all of them are polished on the curve and compared by their true
+/// distance. 64 ulps (1.4e-14) covers the sums of degree-15 products with
+/// room; a near tie that close is a tie at any accuracy users ask for.
+/// Dimensionless (a fraction of the largest squared distance).
+inline constexpr double kClosestPointTieSlack = 64.0 * 2.220446049250313e-16;
+
 /// Degree up to which kernels keep their de Casteljau triangle on the stack.
 /// Beyond it, a batch call allocates one workspace for the whole call.
 inline constexpr int kMaxStackDegree = 255;

@@ -1,0 +1,116 @@
+// casteljau closest: for each query point (--point, repeated, then the rows
+// of --points FILE.csv), the nearest point of the curve of MODEL, as CSV
+// query,t,distance,x,y[,z]; with --all every local minimum of the distance,
+// the global one first (docs/cli.md, "closest"). The output is built in
+// memory and written once every query is answered.
+#include <fmt/format.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "casteljau/io/csv.hpp"
+#include "casteljau/io/model.hpp"
+#include "casteljau/io/model_json.hpp"
+#include "casteljau/ops/closest_point.hpp"
+#include "commands.hpp"
+
+namespace casteljau::cli {
+namespace {
+
+struct ClosestOptions {
+  std::string model;
+  std::vector<std::string> points;
+  std::string points_file;
+  bool all = false;
+  std::string output;
+  const CLI::Option* points_file_option = nullptr;
+};
+
+/// One answer as a CSV row: query index, parameter, distance, the point.
+void append_row(std::string& out, std::size_t query, const NearestPoint& nearest) {
+  std::vector<double> row{static_cast<double>(query), nearest.parameter, nearest.distance};
+  row.insert(row.end(), nearest.point.begin(), nearest.point.end());
+  append_points_csv(out, row, static_cast<int>(row.size()));
+}
+
+int run_closest(const ClosestOptions& options) {
+  std::vector<double> queries;
+  std::size_t dimension = 0;
+  const auto add = [&](std::span<const double> q, const std::string& what) -> Status {
+    if (dimension == 0) dimension = q.size();
+    if (q.size() != dimension)
+      return Error{fmt::format("{} has {} coordinates, the first query has {}", what, q.size(), dimension)};
+    queries.insert(queries.end(), q.begin(), q.end());
+    return {};
+  };
+  for (std::size_t i = 0; i < options.points.size(); ++i) {
+    auto point = vector_option("--point", options.points[i]);
+    if (!point) return fail(point.error());
+    if (Status status = add(*point, fmt::format("--point {}", options.points[i])); !status) return fail(status.error());
+  }
+  if (given(options.points_file_option)) {
+    auto rows = read_points_csv(options.points_file);
+    if (!rows) return fail(in_file(options.points_file, rows.error()));
+    for (std::size_t i = 0; i < rows->size(); ++i)
+      if (Status status = add((*rows)[i], fmt::format("point {} of '{}'", i, options.points_file)); !status)
+        return fail(status.error());
+  }
+  if (queries.empty()) return fail("closest needs query points: --point X,Y[,Z] or --points FILE.csv");
+  const auto models = read_models(options.model);
+  if (!models) return fail(models.error());
+  if (models->size() != 1)
+    return fail(fmt::format("closest takes one curve; '{}' holds {} models", options.model, models->size()));
+  const Model& model = models->front();
+  const std::string name = model_name(*models, 0, options.model);
+  if (is_surface(model))
+    return fail(fmt::format("closest takes a curve; {} is a surface (point inversion on surfaces is not built yet)",
+                            name));
+  const CurveView curve = curve_view(model);
+  if (dimension != static_cast<std::size_t>(curve.dimension()))
+    return fail(fmt::format("the query points have {} coordinates, {} lives in R^{}", dimension, name,
+                            curve.dimension()));
+  const std::size_t count = queries.size() / dimension;
+  std::string out = "query,t,distance";
+  for (std::size_t j = 0; j < dimension; ++j) out += j < 3 ? std::string(",") + "xyz"[j] : fmt::format(",x{}", j);
+  out += '\n';
+  if (options.all) {
+    for (std::size_t i = 0; i < count; ++i) {
+      auto minima = local_closest_points(curve, std::span<const double>(queries).subspan(i * dimension, dimension));
+      if (!minima) return fail(with_context(minima.error(), fmt::format("query {}", i)));
+      for (const NearestPoint& nearest : *minima) append_row(out, i, nearest);
+    }
+  } else {
+    std::vector<double> parameters(count), distances(count);
+    if (Status status = closest_points(curve, queries, parameters, distances); !status)
+      return fail(status.error());
+    for (std::size_t i = 0; i < count; ++i) {
+      NearestPoint nearest{parameters[i], distances[i], point_at(curve, parameters[i])};
+      append_row(out, i, nearest);
+    }
+  }
+  return write_output(options.output, out);
+}
+
+}  // namespace
+
+void add_closest_command(CLI::App& app, int& status) {
+  auto options = std::make_shared<ClosestOptions>();
+  CLI::App* closest = app.add_subcommand(
+      "closest",
+      "For each query point, the nearest point of the curve in MODEL, as CSV query,t,distance,x,y[,z]: the global "
+      "minimum of the distance over the whole domain, end points and knots included; with --all every local "
+      "minimum, the global one first. Queries: each --point, then the rows of --points, numbered from 0 "
+      "(docs/curves.md).");
+  CLI::Option* model =
+      closest->add_option("MODEL", options->model, "Model JSON with one curve, or a CSV point set taken as one Bézier curve")
+          ->required();
+  closest->add_option("--point", options->points, "A query point X,Y[,Z] (repeatable)")->type_name("X,Y[,Z]");
+  options->points_file_option =
+      closest->add_option("--points", options->points_file, "Query points, one per CSV row")->type_name("FILE.csv");
+  closest->add_flag("--all", options->all, "Every local minimum of the distance, the global one first");
+  CLI::Option* output = closest->add_option("-o,--output", options->output, kOutputHelp)->type_name("FILE");
+  set_action(closest, status, {{model, options->points_file_option}, output}, [options] { return run_closest(*options); });
+}
+
+}  // namespace casteljau::cli

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# casteljau closest: nearest points known in closed form (the NURBS half
+# circle of radius 3 about the origin: along the ray through the query; a
+# segment's orthogonal projection; the end when the foot falls beyond it),
+# --points files and repeated --point, --all with the ends and corners, a
+# 3D curve, and bad input: exit 2, one line on stderr, nothing on stdout.
+# Usage: bash closest.sh CASTELJAU EXAMPLES_DIR
+source "$(dirname "$0")/support/common.sh" "$@"
+
+check "half circle from above" "$(printf 'query,t,distance,x,y\n0,0.5,2,0,3')" \
+  closest "$examples/semicircle.json" --point 0,5
+model segment.json '{"type": "bezier", "control_points": [[0,0],[4,2]]}'
+check "projection and ends" "$(printf 'query,t,distance,x,y\n0,0.5,2.23606797749979,2,1\n1,1,5.0990195135927845,4,2\n2,0,1,0,0')" \
+  closest "$work/segment.json" --point 1,3 --point 9,1 --point=-1,0
+printf 'x,y\n1,3\n# a comment\n9,1\n' >"$work/queries.csv"
+check "--points after --point" "$(printf 'query,t,distance,x,y\n0,0,1,0,0\n1,0.5,2.23606797749979,2,1\n2,1,5.0990195135927845,4,2')" \
+  closest "$work/segment.json" --point=-1,0 --points "$work/queries.csv"
+# From the centre every point is at distance 3: the two ends are the local minima.
+check "--all from the centre" "$(printf 'query,t,distance,x,y\n0,0,3,-3,0\n0,1,3,3,0')" \
+  closest "$examples/semicircle.json" --point 0,0 --all
+# The parabola y = x^2 from (0, 1): minima at x = -+1/sqrt(2), the left one first.
+model parabola.json '{"type": "bezier", "control_points": [[-1,1],[0,-1],[1,1]]}'
+out=$("$casteljau" closest "$work/parabola.json" --point 0,1 --all 2>&1)
+/usr/bin/python3 - "$out" <<'PY' || { echo "FAIL: --all on the parabola: $out"; failures=$((failures + 1)); }
+import math, sys
+lines = sys.argv[1].splitlines()
+rows = [tuple(map(float, line.split(","))) for line in lines[1:]]
+x = 1 / math.sqrt(2)
+expected = [(0, (1 - x) / 2, math.sqrt(3) / 2, -x, 0.5), (0, (1 + x) / 2, math.sqrt(3) / 2, x, 0.5)]
+sys.exit(lines[0] != "query,t,distance,x,y" or len(rows) != 2 or
+         any(abs(a - b) > 1e-15 for r, e in zip(rows, expected) for a, b in zip(r, e)))
+PY
+model helix.json '{"type": "bezier", "control_points": [[0,0,0],[1,0,1],[1,1,2]]}'
+check "3D header" "$(printf 'query,t,distance,x,y,z\n0,0,1,0,0,0')" closest "$work/helix.json" --point 0,0,-1
+"$casteljau" closest "$work/segment.json" --point 1,3 -o "$work/out.csv" 2>"$work/stderr" &&
+  [[ $(wc -l <"$work/out.csv") -eq 2 ]] || { echo "FAIL: -o"; failures=$((failures + 1)); }
+
+expect_error "no query" "closest needs query points: --point X,Y[,Z] or --points FILE.csv" closest "$work/segment.json"
+expect_error "wrong dimension" "the query points have 3 coordinates, the bezier model in" \
+  closest "$work/segment.json" --point 1,2,3
+expect_error "mixed dimensions" "--point 1,2,3 has 3 coordinates, the first query has 2" \
+  closest "$work/segment.json" --point 1,2 --point 1,2,3
+expect_error "not a number" "--point: 'a' is not a number" closest "$work/segment.json" --point a,1
+printf '1,2\n1,nan\n' >"$work/bad.csv"
+expect_error "a bad row" "bad.csv" closest "$work/segment.json" --points "$work/bad.csv"
+expect_error "a surface" "closest takes a curve; the bezier_surface model in" closest "$examples/patch.json" --point 0,0,0
+model two.json '{"models": [{"type": "bezier", "control_points": [[0,0],[3,4]]}, {"type": "bezier", "control_points": [[0,0],[1,0]]}]}'
+expect_error "two models" "closest takes one curve; '$work/two.json' holds 2 models" closest "$work/two.json" --point 0,0
+expect_error "missing file" "nothing.json" closest "$work/nothing.json" --point 0,0
+
+finish closest

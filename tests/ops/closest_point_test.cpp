@@ -1,0 +1,323 @@
+// Closest point against answers known in closed form (a segment, the
+// parabola y = x^2, the NURBS circle, queries beyond the ends) with their
+// parameter errors in ulps, and against a brute-force oracle: the exact
+// minimum over a dense sampling of the curve (every sample visited; chunks
+// of consecutive samples are skipped only when their box is farther than the
+// best sample), refined by golden-section search beside the best sample. A
+// miss is an answer farther than the oracle's by more than 1e-9 of the
+// curve's size; 10^5 random queries per curve kind, none may miss.
+#include "casteljau/ops/closest_point.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "casteljau/bezier/bezier_curve.hpp"
+#include "casteljau/bspline/bspline_curve.hpp"
+#include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/nurbs/conics.hpp"
+#include "support/bspline_generators.hpp"
+#include "support/splitmix.hpp"
+
+namespace casteljau {
+namespace {
+
+BezierCurve bezier(const std::vector<std::vector<double>>& rows, std::vector<double> weights = {}) {
+  return BezierCurve::make(PointArray::make(rows).value(), std::move(weights)).value();
+}
+
+/// Distance between two doubles in units in the last place.
+double ulps(double x, double reference) {
+  if (x == reference) return 0.0;
+  const double spacing = std::nextafter(std::abs(reference), INFINITY) - std::abs(reference);
+  return std::abs(x - reference) / spacing;
+}
+
+TEST(ClosestPoint, OnASegmentIsTheOrthogonalProjection) {
+  const BezierCurve segment = bezier({{0, 0}, {4, 2}});
+  // q = (1, 3): t = (q . (4, 2)) / 20 = 1/2, the point (2, 1), distance sqrt(5).
+  const NearestPoint nearest = closest_point(segment, std::vector<double>{1, 3}).value();
+  EXPECT_EQ(nearest.parameter, 0.5);
+  EXPECT_EQ(nearest.point, (Point{2, 1}));
+  EXPECT_NEAR(nearest.distance, std::sqrt(5.0), 1e-15);
+  // Beyond either end, the end itself, exactly.
+  EXPECT_EQ(closest_point(segment, std::vector<double>{-3, -1}).value().parameter, 0.0);
+  const NearestPoint beyond = closest_point(segment, std::vector<double>{9, 1}).value();
+  EXPECT_EQ(beyond.parameter, 1.0);
+  EXPECT_EQ(beyond.point, (Point{4, 2}));
+  EXPECT_EQ(beyond.distance, std::sqrt(26.0));
+}
+
+TEST(ClosestPoint, OnTheParabolaHasTwoSymmetricMinimaAndEndsWhenBeyond) {
+  // (-1, 1), (0, -1), (1, 1): x = 2t - 1, y = x^2. From q = (0, 1) the squared
+  // distance x^2 + (x^2 - 1)^2 has minima at x = +-1/sqrt(2) (distance
+  // sqrt(3)/2) and a maximum at x = 0; at the ends it grows.
+  const BezierCurve parabola = bezier({{-1, 1}, {0, -1}, {1, 1}});
+  const std::vector<double> q{0, 1};
+  const double left = (1 - std::sqrt(0.5)) / 2, right = (1 + std::sqrt(0.5)) / 2;
+  const NearestPoint global = closest_point(parabola, q).value();
+  EXPECT_LE(ulps(global.parameter, left), 2.0);  // the tie goes to the lower parameter
+  EXPECT_NEAR(global.distance, std::sqrt(3.0) / 2, 1e-15);
+  const std::vector<NearestPoint> all = local_closest_points(parabola, q).value();
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_LE(ulps(all[0].parameter, left), 2.0);
+  EXPECT_LE(ulps(all[1].parameter, right), 2.0);
+  // From (2, 5) the distance still falls at x = 1: the end is the answer, exactly.
+  const NearestPoint end = closest_point(parabola, std::vector<double>{2, 5}).value();
+  EXPECT_EQ(end.parameter, 1.0);
+  EXPECT_EQ(end.distance, std::sqrt(17.0));
+  // From (0, -1) the vertex: one minimum, t = 1/2.
+  const NearestPoint vertex = closest_point(parabola, std::vector<double>{0, -1}).value();
+  EXPECT_EQ(vertex.parameter, 0.5);
+  EXPECT_EQ(vertex.distance, 1.0);
+}
+
+TEST(ClosestPoint, OnTheNurbsCircleIsAlongTheRay) {
+  const BSplineCurve circle = make_circle(1.0, -2.0, 3.0).value();
+  test::SplitMix random{41};
+  double worst_distance = 0.0;
+  for (int i = 0; i < 1000; ++i) {
+    const double angle = 2 * M_PI * random.unit(), radius = 10 * random.unit();
+    const std::vector<double> q{1.0 + radius * std::cos(angle), -2.0 + radius * std::sin(angle)};
+    const NearestPoint nearest = closest_point(circle, q).value();
+    worst_distance = std::max(worst_distance, std::abs(nearest.distance - std::abs(radius - 3.0)));
+    // The nearest point is on the ray from the centre through q.
+    const double along = std::atan2(nearest.point[1] + 2.0, nearest.point[0] - 1.0);
+    const double gap = std::remainder(along - angle, 2 * M_PI);
+    if (radius > 1e-6) {
+      EXPECT_LT(std::abs(gap), 1e-9) << "query " << i;
+    }
+  }
+  EXPECT_LT(worst_distance, 1e-13);
+  // From the centre every point is at distance 3: the answer is one of them.
+  EXPECT_NEAR(closest_point(circle, std::vector<double>{1, -2}).value().distance, 3.0, 1e-14);
+}
+
+TEST(ClosestPoint, RefusesBadQueries) {
+  const BezierCurve segment = bezier({{0, 0}, {4, 2}});
+  EXPECT_EQ(closest_point(segment, std::vector<double>{1, 2, 3}).error().message,
+            "the query point has 3 coordinates, the curve lives in R^2");
+  EXPECT_EQ(closest_point(segment, std::vector<double>{1, NAN}).error().message,
+            "coordinate 1 of the query point is NaN");
+  std::vector<double> parameters(2), distances(2);
+  const std::vector<double> queries{0, 0, 1, INFINITY};
+  EXPECT_EQ(closest_points(segment, queries, parameters, distances).error().message,
+            "coordinate 1 of query 1 is infinite");
+  EXPECT_FALSE(closest_points(segment, std::vector<double>{0, 0, 1}, parameters, distances));
+  EXPECT_FALSE(closest_points(segment, queries, std::span<double>(parameters).first(1), distances));
+}
+
+/// The brute-force oracle: the curve sampled densely (every piece alike, its
+/// ends and breakpoints included), the exact nearest sample by exhaustive
+/// search, then golden-section search on the two sample intervals beside it.
+class Oracle {
+ public:
+  Oracle(CurveView curve, int samples_per_piece) : curve_(curve), d_(curve.dimension()) {
+    const std::vector<double> knots = breakpoints(curve);
+    for (std::size_t k = 0; k + 1 < knots.size(); ++k)
+      for (int i = 0; i < samples_per_piece; ++i)
+        us_.push_back(knots[k] + (knots[k + 1] - knots[k]) * i / samples_per_piece);
+    us_.push_back(knots.back());
+    points_.resize(us_.size() * static_cast<std::size_t>(d_));
+    points_at(curve, us_, points_);
+    for (std::size_t start = 0; start < us_.size(); start += kChunk) {
+      std::vector<double> box(2 * d_, 0.0);
+      for (int j = 0; j < d_; ++j) box[j] = INFINITY, box[d_ + j] = -INFINITY;
+      for (std::size_t i = start; i < std::min(us_.size(), start + kChunk); ++i)
+        for (int j = 0; j < d_; ++j) {
+          box[j] = std::min(box[j], points_[i * d_ + j]);
+          box[d_ + j] = std::max(box[d_ + j], points_[i * d_ + j]);
+        }
+      boxes_.insert(boxes_.end(), box.begin(), box.end());
+    }
+  }
+
+  double distance(const double* q) const {
+    double best = INFINITY;
+    std::size_t at = 0;
+    for (std::size_t chunk = 0; chunk * kChunk < us_.size(); ++chunk) {
+      double bound = 0.0;
+      for (int j = 0; j < d_; ++j) {
+        const double lower = boxes_[chunk * 2 * d_ + j], upper = boxes_[chunk * 2 * d_ + d_ + j];
+        const double gap = q[j] < lower ? lower - q[j] : (q[j] > upper ? q[j] - upper : 0.0);
+        bound += gap * gap;
+      }
+      if (bound > best) continue;
+      for (std::size_t i = chunk * kChunk; i < std::min(us_.size(), (chunk + 1) * kChunk); ++i) {
+        double g = 0.0;
+        for (int j = 0; j < d_; ++j) g += (points_[i * d_ + j] - q[j]) * (points_[i * d_ + j] - q[j]);
+        if (g < best) best = g, at = i;
+      }
+    }
+    double result = std::sqrt(best);
+    if (at > 0) result = std::min(result, golden(us_[at - 1], us_[at], q));
+    if (at + 1 < us_.size()) result = std::min(result, golden(us_[at], us_[at + 1], q));
+    return result;
+  }
+
+ private:
+  static constexpr std::size_t kChunk = 32;
+
+  double at(double u, const double* q) const {
+    const Point p = point_at(curve_, u);
+    double g = 0.0;
+    for (int j = 0; j < d_; ++j) g += (p[j] - q[j]) * (p[j] - q[j]);
+    return std::sqrt(g);
+  }
+  double golden(double a, double b, const double* q) const {
+    const double ratio = (std::sqrt(5.0) - 1) / 2;
+    double x1 = b - ratio * (b - a), x2 = a + ratio * (b - a);
+    double f1 = at(x1, q), f2 = at(x2, q);
+    for (int i = 0; i < 60; ++i) {
+      if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - ratio * (b - a), f1 = at(x1, q);
+      else a = x1, x1 = x2, f1 = f2, x2 = a + ratio * (b - a), f2 = at(x2, q);
+    }
+    return std::min({f1, f2, at(a, q), at(b, q)});
+  }
+
+  CurveView curve_;
+  int d_;
+  std::vector<double> us_, points_, boxes_;
+};
+
+struct OracleResult {
+  int missed = 0;
+  double worst_miss = 0.0;  // largest (ours - oracle) / size
+  double worst_gain = 0.0;  // largest (oracle - ours) / size: where sampling stopped short
+};
+
+/// 10^5 queries: 90% uniform in the curve's box grown by half its size on
+/// every side, 10% within 1e-6 of its size from a random point of the curve.
+/// The batch answers them in one call; some are also checked one by one.
+OracleResult against_oracle(CurveView curve, std::uint64_t seed, int count = 100000) {
+  const int d = curve.dimension();
+  const Oracle oracle(curve, 4096 / static_cast<int>(breakpoints(curve).size() - 1) + 64);
+  const double size = size_of(curve);
+  std::vector<double> lower(d, INFINITY), upper(d, -INFINITY);
+  std::vector<double> samples(1001 * static_cast<std::size_t>(d)), us(1001);
+  const Interval domain = curve.domain();
+  for (int i = 0; i <= 1000; ++i) us[i] = domain.lerp(i / 1000.0);
+  points_at(curve, us, samples);
+  for (std::size_t i = 0; i < us.size(); ++i)
+    for (int j = 0; j < d; ++j)
+      lower[j] = std::min(lower[j], samples[i * d + j]), upper[j] = std::max(upper[j], samples[i * d + j]);
+  test::SplitMix random{seed};
+  std::vector<double> queries(static_cast<std::size_t>(count) * d);
+  for (int i = 0; i < count; ++i) {
+    if (i % 10 == 9) {
+      const Point on = point_at(curve, domain.lerp(random.unit()));
+      for (int j = 0; j < d; ++j) queries[i * d + j] = on[j] + 1e-6 * size * (2 * random.unit() - 1);
+    } else {
+      for (int j = 0; j < d; ++j)
+        queries[i * d + j] = lower[j] - size / 2 + (upper[j] - lower[j] + size) * random.unit();
+    }
+  }
+  std::vector<double> parameters(count), distances(count);
+  EXPECT_TRUE(closest_points(curve, queries, parameters, distances));
+  OracleResult result;
+  for (int i = 0; i < count; ++i) {
+    const double* q = queries.data() + static_cast<std::ptrdiff_t>(i) * d;
+    const double reference = oracle.distance(q);
+    const double excess = (distances[i] - reference) / size;
+    result.worst_miss = std::max(result.worst_miss, excess);
+    result.worst_gain = std::max(result.worst_gain, -excess);
+    if (excess > 1e-9) ++result.missed;
+    // The reported distance is that of the reported parameter's point.
+    const Point p = point_at(curve, parameters[i]);
+    double g = 0.0;
+    for (int j = 0; j < d; ++j) g += (p[j] - q[j]) * (p[j] - q[j]);
+    EXPECT_NEAR(std::sqrt(g), distances[i], 1e-12 * size) << "query " << i;
+    if (i % 1000 == 0) {
+      const NearestPoint single = closest_point(curve, std::span<const double>(q, d)).value();
+      EXPECT_NEAR(single.distance, distances[i], 1e-12 * size) << "query " << i;
+    }
+  }
+  std::printf("closest point oracle: %d queries, %d missed, worst excess %.3g, worst gain %.3g (of the size)\n",
+              count, result.missed, result.worst_miss, result.worst_gain);
+  return result;
+}
+
+TEST(ClosestPointOracle, CubicBezier) {
+  const BezierCurve loop = bezier({{0, 0}, {6, 5}, {-2, 5}, {4, 0}});
+  EXPECT_EQ(against_oracle(loop, 1).missed, 0);
+}
+
+TEST(ClosestPointOracle, RationalBezier) {
+  const BezierCurve rational = bezier({{0, 0}, {2, 4}, {5, -1}, {6, 3}}, {1.0, 3.0, 0.4, 2.0});
+  EXPECT_EQ(against_oracle(rational, 2).missed, 0);
+}
+
+TEST(ClosestPointOracle, HighDegreeBezier) {
+  test::SplitMix random{3};
+  std::vector<std::vector<double>> rows;
+  for (int i = 0; i <= 20; ++i) rows.push_back({i + 3 * random.unit(), 10 * random.unit()});
+  EXPECT_EQ(against_oracle(bezier(rows), 3, 10000).missed, 0);  // the general kernel: 10^4
+}
+
+TEST(ClosestPointOracle, PiecewiseBezierWithCorners) {
+  const PiecewiseBezierCurve pieces =
+      PiecewiseBezierCurve::make({bezier({{0, 0}, {1, 3}, {3, 3}, {4, 0}}), bezier({{4, 0}, {5, 2}, {6, -2}}),
+                                  bezier({{6, -2}, {3, -4}, {0, -3}, {0, 0}})})
+          .value();
+  EXPECT_EQ(against_oracle(pieces, 4).missed, 0);
+}
+
+TEST(ClosestPointOracle, SpatialBSpline) {
+  test::SplitMix random{5};
+  std::vector<double> coordinates;
+  for (int i = 0; i < 3 * 14; ++i) coordinates.push_back(10 * random.unit());
+  const BSplineCurve curve =
+      BSplineCurve::make(3, clamped_uniform_knots(3, 14), PointArray::make(3, coordinates).value()).value();
+  EXPECT_EQ(against_oracle(curve, 6).missed, 0);
+}
+
+TEST(ClosestPointOracle, NurbsCircle) {
+  EXPECT_EQ(against_oracle(make_circle(0.5, 0.25, 2.0).value(), 7).missed, 0);
+}
+
+TEST(ClosestPoint, LocalMinimaIncludeEndsAndCorners) {
+  // A V: two segments meeting at (0, 0). From (0, 1) the squared distance
+  // to (x, |x|) is 2x^2 - 2|x| + 1: minima at the feet (-1/2, 1/2), (1/2,
+  // 1/2) (u = 3/4 and 5/4), the corner a maximum. From (0, -1) it is
+  // 2x^2 + 2|x| + 1: the corner is the only minimum (a corner minimum,
+  // where the distance falls into it from both sides).
+  const PiecewiseBezierCurve v =
+      PiecewiseBezierCurve::make({bezier({{-2, 2}, {0, 0}}), bezier({{0, 0}, {2, 2}})}).value();
+  const auto above = local_closest_points(v, std::vector<double>{0, 1}).value();
+  ASSERT_EQ(above.size(), 2u);
+  EXPECT_EQ(above[0].parameter, 0.75);
+  EXPECT_EQ(above[1].parameter, 1.25);
+  const auto below = local_closest_points(v, std::vector<double>{0, -1}).value();
+  ASSERT_EQ(below.size(), 1u);
+  EXPECT_EQ(below[0].parameter, 1.0);
+  // From (0, 5) the distance falls towards both far ends of the V and rises
+  // into the corner: the ends are the two minima, and (-2, 2) comes first on
+  // a tie; the perpendicular feet at (+-2.5, 2.5) lie beyond the ends.
+  const auto far = local_closest_points(v, std::vector<double>{0, 5}).value();
+  ASSERT_EQ(far.size(), 2u);
+  EXPECT_EQ(far[0].parameter, 0.0);
+  EXPECT_EQ(far[1].parameter, 2.0);
+  EXPECT_EQ(closest_point(v, std::vector<double>{0, 5}).value().parameter, 0.0);
+}
+
+RC_GTEST_PROP(ClosestPoint, IsNoFartherThanTheOracleOnRandomCurves, ()) {
+  const BSplineCurve curve = *test::bspline_curve(
+      {.max_degree = 5, .dimension = 2, .max_extra_points = 8, .rational = test::Rational::sometimes, .allow_jumps = true});
+  const Oracle oracle(curve, 512);
+  const double size = size_of(curve);
+  for (int i = 0; i < 20; ++i) {
+    const std::vector<double> q{*rc::gen::inRange(-40, 41) * 0.5, *rc::gen::inRange(-40, 41) * 0.5};
+    const NearestPoint nearest = closest_point(curve, q).value();
+    RC_ASSERT(nearest.distance <= oracle.distance(q.data()) + 1e-9 * std::max(size, 1.0));
+    const std::vector<NearestPoint> locals = local_closest_points(curve, q).value();
+    for (const NearestPoint& local : locals)
+      RC_ASSERT(local.distance >= nearest.distance - 1e-9 * std::max(size, 1.0));
+  }
+}
+
+}  // namespace
+}  // namespace casteljau
