@@ -22,5 +22,6 @@ void add_fit_command(CLI::App& app, int& status);          // cli/fit_command.cp
 void add_tessellate_command(CLI::App& app, int& status);   // cli/tessellate_command.cpp
 void add_length_command(CLI::App& app, int& status);       // cli/length_command.cpp
 void add_closest_command(CLI::App& app, int& status);      // cli/closest_command.cpp
+void add_intersect_command(CLI::App& app, int& status);    // cli/intersect_command.cpp
 
 }  // namespace casteljau::cli

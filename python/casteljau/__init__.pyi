@@ -6,7 +6,7 @@ control nets (rows, columns, d)."""
 from __future__ import annotations
 
 import os
-from typing import Any, Callable, Iterator, Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Callable, Dict, Iterator, List, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy
 from numpy.typing import ArrayLike, NDArray
@@ -821,6 +821,10 @@ def closest_points(curve: _AnyCurve, points: ArrayLike) -> Tuple[NDArray[numpy.f
 
 def local_closest_points(curve: _AnyCurve, point: ArrayLike) -> Tuple[NDArray[numpy.float64], NDArray[numpy.float64],
                                                                      NDArray[numpy.float64]]: ...
+
+def intersections(a: _AnyCurve, b: _AnyCurve, tolerance: Optional[float] = None) -> List[Dict[str, Any]]: ...
+
+def self_intersections(curve: _AnyCurve, tolerance: Optional[float] = None) -> List[Dict[str, Any]]: ...
 
 def parameter_at_length(curve: _AnyCurve, length: float, tolerance: Optional[float] = None) -> float: ...
 

@@ -24,6 +24,7 @@
 #include "casteljau/ops/bounds.hpp"
 #include "casteljau/ops/closest_point.hpp"
 #include "casteljau/ops/inflections.hpp"
+#include "casteljau/ops/intersection.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/tessellate.hpp"
@@ -172,6 +173,40 @@ Tolerance arc_length_tolerance(CurveView curve, const py::object& tolerance) {
   return Tolerance{tolerance.cast<double>()};
 }
 
+/// Any curve object as a view (the object must outlive it); TypeError otherwise.
+CurveView curve_of(const py::handle& object, const char* what) {
+  if (py::isinstance<BezierCurve>(object)) return CurveView(object.cast<const BezierCurve&>());
+  if (py::isinstance<PiecewiseBezierCurve>(object)) return CurveView(object.cast<const PiecewiseBezierCurve&>());
+  if (py::isinstance<BSplineCurve>(object)) return CurveView(object.cast<const BSplineCurve&>());
+  throw py::type_error(fmt::format("{} is a {}, expected a BezierCurve, PiecewiseBezierCurve or BSplineCurve", what,
+                                   std::string(py::str(py::type::of(object).attr("__name__")))));
+}
+
+/// The intersections as a list of dicts shaped like the CLI's JSON.
+py::list intersection_list(const std::vector<CurveIntersection>& found) {
+  py::list result;
+  for (const CurveIntersection& x : found) {
+    py::dict item;
+    item["kind"] = kind_name(x.kind);
+    if (x.kind == IntersectionKind::overlap) {
+      item["a"] = py::make_tuple(x.a.lower, x.a.upper);
+      item["b"] = py::make_tuple(x.b.lower, x.b.upper);
+    } else {
+      item["a"] = x.a.lower;
+      item["b"] = x.b.lower;
+      item["point"] = to_numpy(x.point);
+      item["multiplicity"] = x.multiplicity;
+    }
+    result.append(item);
+  }
+  return result;
+}
+
+Tolerance intersection_tolerance(CurveView a, CurveView b, const py::object& tolerance) {
+  if (tolerance.is_none()) return default_intersection_tolerance(a, b);
+  return tolerance_from(tolerance.cast<double>(), "tolerance");
+}
+
 }  // namespace
 
 void bind_ops(py::module_& module) {
@@ -313,6 +348,30 @@ void bind_ops(py::module_& module) {
         "count parameters, the ends of the domain included, whose points are equally spaced along the curve "
         "(each length within the tolerance), as a (count,) array: points_at(curve, these) resamples it.");
   });
+
+  // --- intersections (ops/intersection.hpp), any pair of curve kinds ------------
+  module.def(
+      "intersections",
+      [](const py::object& a, const py::object& b, const py::object& tolerance) {
+        const CurveView first = curve_of(a, "a"), second = curve_of(b, "b");
+        const Tolerance accuracy = intersection_tolerance(first, second, tolerance);
+        return intersection_list(unwrap(without_gil([&] { return intersections(first, second, accuracy); })));
+      },
+      py::arg("a"), py::arg("b"), py::arg("tolerance") = py::none(),
+      "The intersections of two plane curves of any kinds, sorted by the parameter on a, as a list of dicts: "
+      "{'kind': 'transversal'|'tangent', 'a', 'b', 'point' (2,), 'multiplicity'} for points, {'kind': 'overlap', "
+      "'a': (a0, a1), 'b': (b(a0), b(a1))} for shared stretches (ops/intersection.hpp). tolerance: the distance "
+      "within which the curves meet (default 1e-9 of the larger size). ValueError for curves not in the plane.");
+  module.def(
+      "self_intersections",
+      [](const py::object& curve, const py::object& tolerance) {
+        const CurveView view = curve_of(curve, "curve");
+        const Tolerance accuracy = intersection_tolerance(view, view, tolerance);
+        return intersection_list(unwrap(without_gil([&] { return self_intersections(view, accuracy); })));
+      },
+      py::arg("curve"), py::arg("tolerance") = py::none(),
+      "The self-intersections of a plane curve (a < b, both on it), as intersections() reports them; the joints "
+      "of its pieces and the seam of a closed curve are not self-intersections, nor is a cusp.");
 
   module.def(
       "flatten_segment_count",

@@ -46,6 +46,14 @@ inline constexpr double kMinArcLengthRelativeTolerance = 1e-14;
 /// Default accuracy of the CLI's `length`, relative to the curve's size.
 inline constexpr double kDefaultArcLengthRelativeTolerance = 1e-12;
 
+/// Default distance within which two curves count as meeting
+/// (ops/intersection), relative to the larger curve's size: the roots of the
+/// implicit equation are found to about 1e-15 of the size for simple
+/// intersections and about 1e-8 of a piece for tangencies (the square root of
+/// the rounding), so 1e-9 accepts every true intersection and refuses curves
+/// that pass farther apart than a billionth of their size.
+inline constexpr double kDefaultIntersectionRelativeTolerance = 1e-9;
+
 /// Largest number of quadrature intervals one arc-length computation may use
 /// (15 evaluations each). A curve that needs more at the requested accuracy
 /// (a tolerance tiny against a long, wildly varying curve) is refused rather

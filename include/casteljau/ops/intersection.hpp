@@ -1,0 +1,97 @@
+#pragma once
+// Intersections of two plane curves of any kinds (CurveView), each reported
+// once with its kind: transversal, tangent (with its multiplicity) or
+// overlap (the two parameter intervals that trace the same points).
+//
+// Per pair of Bézier pieces whose boxes meet, the piece of lower degree n is
+// implicitized: its implicit equation f(x, y) = 0 is the determinant of the
+// n x n Bézout matrix of X w(t) - x(t) and Y w(t) - y(t), whose entries are
+// linear in (X, Y) (Sederberg, Anderson & Goldman, "Implicit representation of
+// parametric curves and surfaces", CVGIP 28, 1984). Substituting the other
+// piece B(t) gives one polynomial p(t) = f(B(t)) of degree n m, built in
+// Bernstein form by products (Farin §5.8) for n <= 3, whose roots in [0, 1]
+// are the parameters on B where it meets the implicit curve, each with its
+// intersection multiplicity (bernstein_roots: simple roots, clusters,
+// tangencies found within rounding). Each root is inverted on the first
+// piece (ops/closest_point: every point within the tolerance), and a simple
+// root is refined by Newton on A(s) - B(t) = 0. p identically zero within
+// rounding means both pieces lie on one algebraic curve: the overlap is
+// found from the end points of each piece that lie on the other. Results of
+// all piece pairs are merged: a hit at a knot or an end, seen from two
+// pieces, is one intersection; overlaps of consecutive pieces join.
+//
+// tests/ops/intersection_test.cpp checks answers known in closed form:
+// tangencies of multiplicity 2 and 3, overlaps both ways and across pieces,
+// shared ends, hits at knots and on a closed curve's seam once, nearly
+// parallel lines, a loop; tests/python/ checks crossings against numpy.
+
+#include <vector>
+
+#include "casteljau/core/expected.hpp"
+#include "casteljau/core/interval.hpp"
+#include "casteljau/core/point_array.hpp"
+#include "casteljau/core/tolerance.hpp"
+#include "casteljau/curves/curve_view.hpp"
+
+namespace casteljau {
+
+/// How two curves meet at an intersection.
+enum class IntersectionKind {
+  /// They cross with distinct tangents (multiplicity 1).
+  transversal,
+  /// They meet with a common tangent line: multiplicity 2 for an ordinary
+  /// tangency (touching), 3 where they also cross (an inflection on the
+  /// tangent), more for higher contact; 0 where two arcs of one algebraic
+  /// curve continue one another at a shared point (contact of every order).
+  tangent,
+  /// They trace the same points over a stretch of each.
+  overlap,
+};
+
+/// One intersection. For a point (transversal, tangent), `a` and `b` are
+/// single parameters (lower == upper) in each curve's own domain; for an
+/// overlap, a = [a0, a1] with a0 < a1 and b = [b(a0), b(a1)], the parameters
+/// of the same two points on the second curve (b.lower > b.upper when the
+/// second curve runs the other way). `point` is the intersection point (for
+/// an overlap, the point at a0).
+struct CurveIntersection {
+  IntersectionKind kind = IntersectionKind::transversal;
+  Interval a;
+  Interval b;
+  Point point;
+  int multiplicity = 1;
+};
+
+/// The default distance within which two curves count as meeting: 1e-9 of
+/// the larger curve's size (size_of), tolerances::kDefaultIntersectionRelativeTolerance.
+Tolerance default_intersection_tolerance(CurveView a, CurveView b);
+
+/// Every intersection of the plane curves a and b, sorted by the parameter on
+/// a: points where they meet (closed domains: ends and knots included, each
+/// reported once), classified as above, and overlaps. Parameters of simple
+/// intersections are refined to full precision; a tangency is known to about
+/// the square root of the rounding (its parameter to ~1e-8 of the piece).
+/// `tolerance`: the distance within which a root of the implicit equation
+/// counts as a point of the other curve (a near miss closer than it is a
+/// tangency). Errors: a curve that is not plane ("intersections need plane
+/// curves, the first lives in R^3"), a tolerance not finite or <= 0.
+Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b, Tolerance tolerance);
+
+/// The self-intersections of a plane curve: pairs of parameters a < b with
+/// C(a) = C(b), each once, as intersections of the curve with itself (`a`
+/// and `b` both on it; overlaps where it runs back over itself). Between
+/// different Bézier pieces as `intersections` finds them (the joint of two
+/// consecutive pieces, and the closing point of a closed curve, are not
+/// self-intersections); inside one piece, the piece is cut where its
+/// hodograph turns by half a turn or more (within a part whose hodograph's
+/// coefficients lie in an open half plane the curve is injective), and
+/// two parts of one piece are intersected by subdivision of their boxes and
+/// Newton on C(s) - C(t) = 0, kept when it converges to rounding with
+/// s != t (a cusp, where C' vanishes, is not a self-intersection).
+/// Errors as intersections.
+Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tolerance tolerance);
+
+/// The name of a kind as the CLI's JSON writes it: "transversal", "tangent", "overlap".
+const char* kind_name(IntersectionKind kind);
+
+}  // namespace casteljau

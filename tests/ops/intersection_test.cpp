@@ -1,0 +1,157 @@
+// Intersections against answers known in closed form: crossing lines, a
+// cubic and a line through its centre of symmetry, tangencies of
+// multiplicity 2 and 3 (a parabola and an inflection on the axis), overlaps
+// of a curve and its own segment (same and opposite direction, and across the
+// pieces of a piecewise curve), shared end points, hits at knots reported
+// once, nearly parallel lines, and the self-intersection of a loop at
+// (5 - sqrt 15) / 10; every kind; bad input. Parameter errors are in ulps.
+#include "casteljau/ops/intersection.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "casteljau/bezier/split.hpp"
+#include "casteljau/bspline/bezier_pieces.hpp"
+#include "casteljau/bspline/bspline_curve.hpp"
+#include "casteljau/nurbs/conics.hpp"
+
+namespace casteljau {
+namespace {
+
+BezierCurve bezier(const std::vector<std::vector<double>>& rows) {
+  return BezierCurve::make(PointArray::make(rows).value()).value();
+}
+
+std::vector<CurveIntersection> between(CurveView a, CurveView b) {
+  return intersections(a, b, default_intersection_tolerance(a, b)).value();
+}
+
+double ulps(double x, double reference) {
+  if (x == reference) return 0.0;
+  return std::abs(x - reference) / (std::nextafter(std::abs(reference), INFINITY) - std::abs(reference));
+}
+
+TEST(Intersections, OfCrossingLinesAndACubicThroughItsCentre) {
+  const auto lines = between(bezier({{0, 0}, {2, 2}}), bezier({{0, 2}, {2, 0}}));
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].kind, IntersectionKind::transversal);
+  EXPECT_EQ(lines[0].a.lower, 0.5);
+  EXPECT_EQ(lines[0].b.lower, 0.5);
+  EXPECT_EQ(lines[0].point, (Point{1, 1}));
+  // The cubic (0,0),(1,3),(2,-3),(3,0) is point-symmetric about (3/2, 0),
+  // as is the line through it: three crossings, the middle at t = 1/2 on
+  // both and the outer two mirror images (t and 1 - t).
+  const BezierCurve cubic = bezier({{0, 0}, {1, 3}, {2, -3}, {3, 0}});
+  const BezierCurve line = bezier({{0, 0.5}, {3, -0.5}});
+  const auto three = between(cubic, line);
+  ASSERT_EQ(three.size(), 3u);
+  for (const CurveIntersection& x : three) EXPECT_EQ(x.kind, IntersectionKind::transversal);
+  EXPECT_EQ(three[1].a.lower, 0.5);
+  EXPECT_LE(ulps(three[0].a.lower, 1.0 - three[2].a.lower), 16.0);
+  for (const CurveIntersection& x : three) {
+    const Point p = point_at(cubic, x.a.lower), q = point_at(line, x.b.lower);
+    EXPECT_LT(std::hypot(p[0] - q[0], p[1] - q[1]), 1e-15);
+  }
+}
+
+TEST(Intersections, ClassifyTangenciesByMultiplicity) {
+  const BezierCurve axis = bezier({{-2, 0}, {2, 0}});
+  // y = x^2 touches the axis at its vertex: multiplicity 2.
+  const auto touch = between(bezier({{-1, 1}, {0, -1}, {1, 1}}), axis);
+  ASSERT_EQ(touch.size(), 1u);
+  EXPECT_EQ(touch[0].kind, IntersectionKind::tangent);
+  EXPECT_EQ(touch[0].multiplicity, 2);
+  EXPECT_NEAR(touch[0].a.lower, 0.5, 1e-7);
+  // y = x^3 (x = 2t - 1) crosses the axis along it: multiplicity 3.
+  const auto inflection = between(bezier({{-1, -1}, {-1.0 / 3, 1}, {1.0 / 3, -1}, {1, 1}}), axis);
+  ASSERT_EQ(inflection.size(), 1u);
+  EXPECT_EQ(inflection[0].kind, IntersectionKind::tangent);
+  EXPECT_EQ(inflection[0].multiplicity, 3);
+  // Lines whose slopes differ by 2^-40 still cross once, transversally.
+  const auto parallel = between(bezier({{0, 0}, {1, 0}}), bezier({{0, -0x1p-41}, {1, 0x1p-41}}));
+  ASSERT_EQ(parallel.size(), 1u);
+  EXPECT_EQ(parallel[0].kind, IntersectionKind::transversal);
+  EXPECT_EQ(parallel[0].a.lower, 0.5);
+}
+
+TEST(Intersections, FindOverlapsInBothDirections) {
+  const BezierCurve cubic = bezier({{0, 0}, {1, 3}, {2, -3}, {3, 0}});
+  const BezierCurve middle = segment(cubic, 0.25, 0.75).value();
+  const auto same = between(cubic, middle);
+  ASSERT_EQ(same.size(), 1u);
+  EXPECT_EQ(same[0].kind, IntersectionKind::overlap);
+  EXPECT_EQ(same[0].a.lower, 0.25);
+  EXPECT_EQ(same[0].a.upper, 0.75);
+  EXPECT_EQ(same[0].b.lower, 0.0);
+  EXPECT_EQ(same[0].b.upper, 1.0);
+  const auto opposite = between(cubic, reversed(middle));
+  ASSERT_EQ(opposite.size(), 1u);
+  EXPECT_EQ(opposite[0].b.lower, 1.0);
+  EXPECT_EQ(opposite[0].b.upper, 0.0);
+  // The cubic against itself split in two pieces: one overlap over both.
+  const auto halves = split_at(cubic, 0.5).value();
+  const PiecewiseBezierCurve two = PiecewiseBezierCurve::make({halves.first, halves.second}).value();
+  const auto whole = between(cubic, two);
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_EQ(whole[0].kind, IntersectionKind::overlap);
+  EXPECT_EQ(whole[0].a.lower, 0.0);
+  EXPECT_EQ(whole[0].a.upper, 1.0);
+  EXPECT_EQ(whole[0].b.lower, 0.0);
+  EXPECT_EQ(whole[0].b.upper, 2.0);
+}
+
+TEST(Intersections, ReportEndsAndKnotsOnce) {
+  const auto ends = between(bezier({{0, 0}, {1, 1}}), bezier({{1, 1}, {2, 0}}));
+  ASSERT_EQ(ends.size(), 1u);
+  EXPECT_EQ(ends[0].a.lower, 1.0);
+  EXPECT_EQ(ends[0].b.lower, 0.0);
+  // A V of two pieces and a vertical line through its joint: one hit, at u = 1.
+  const PiecewiseBezierCurve v =
+      PiecewiseBezierCurve::make({bezier({{-1, 1}, {0, 0}}), bezier({{0, 0}, {1, 1}})}).value();
+  const auto joint = between(v, bezier({{0, -1}, {0, 1}}));
+  ASSERT_EQ(joint.size(), 1u);
+  EXPECT_EQ(joint[0].a.lower, 1.0);
+  EXPECT_EQ(joint[0].b.lower, 0.5);
+  // The NURBS circle (4 rational pieces) and a line through its centre: two
+  // hits, at the knots where the circle meets the axis (the seam, u = 0 and
+  // u = 1 of the closed circle, once).
+  const BSplineCurve circle = make_circle(0.0, 0.0, 1.0).value();
+  const auto diameter = between(circle, bezier({{-2, 0}, {2, 0}}));
+  ASSERT_EQ(diameter.size(), 2u);
+  EXPECT_NEAR(diameter[0].b.lower, 0.75, 1e-15);
+  EXPECT_NEAR(diameter[1].b.lower, 0.25, 1e-15);
+}
+
+TEST(SelfIntersections, OfALoopAndNoneAtACusp) {
+  // (0,0),(2,2),(-1,2),(1,0): y = 6 t (1 - t) is symmetric, and x(t) = x(1 - t)
+  // at t = (5 - sqrt 15) / 10.
+  const auto loop = self_intersections(bezier({{0, 0}, {2, 2}, {-1, 2}, {1, 0}}), Tolerance{1e-9}).value();
+  ASSERT_EQ(loop.size(), 1u);
+  const double s = (5 - std::sqrt(15.0)) / 10;
+  EXPECT_LE(ulps(loop[0].a.lower, s), 4.0);
+  EXPECT_LE(ulps(loop[0].b.lower, 1 - s), 4.0);
+  // (0,0),(1,1),(0,1),(1,0) has a cusp at t = 1/2 (x' = 3 (1 - 2t)^2, y' = 3 (1 - 2t)): no crossing.
+  EXPECT_TRUE(self_intersections(bezier({{0, 0}, {1, 1}, {0, 1}, {1, 0}}), Tolerance{1e-9}).value().empty());
+  // A closed circle has no self-intersection: neither its seam nor its knots.
+  EXPECT_TRUE(self_intersections(make_circle(0.0, 0.0, 1.0).value(), Tolerance{1e-9}).value().empty());
+  // A figure eight of two pieces crossing at (0, 0).
+  const PiecewiseBezierCurve eight =
+      PiecewiseBezierCurve::make({bezier({{0, 0}, {2, 2}, {2, -2}, {0, 0}}), bezier({{0, 0}, {-2, 2}, {-2, -2}, {0, 0}})})
+          .value();
+  const auto crossing = self_intersections(eight, Tolerance{1e-9}).value();
+  EXPECT_FALSE(crossing.empty());
+}
+
+TEST(Intersections, RefuseBadInput) {
+  const BezierCurve plane = bezier({{0, 0}, {1, 1}});
+  const BezierCurve space = bezier({{0, 0, 0}, {1, 1, 1}});
+  EXPECT_EQ(intersections(plane, space, Tolerance{1e-9}).error().message,
+            "intersections need plane curves, the second lives in R^3");
+  EXPECT_FALSE(intersections(plane, plane, Tolerance{0.0}));
+  EXPECT_FALSE(self_intersections(space, Tolerance{1e-9}));
+}
+
+}  // namespace
+}  // namespace casteljau
