@@ -35,7 +35,7 @@ import sys
 from collections import OrderedDict
 from pathlib import Path
 
-PEERS = ("occt", "sisl", "eigen", "scipy", "lib2geom", "gsl")
+PEERS = ("occt", "sisl", "eigen", "scipy", "lib2geom", "gsl", "kurbo", "lyon")
 KIND_ORDER = {"casteljau": 0, "peer": 1, "baseline": 2}
 
 # The Debian packages whose versions a run reports (the peers, the harness, the compiler).
@@ -66,6 +66,7 @@ fractions are lower by nature.
 | W4 (per fit of n points) | 15 per point | 24 per point | the tridiagonal sweep and back substitution for 3 coordinates; the limit is a time, max(FMA time, store time) |
 | W5 (grid) | 13 | 24 | the tensor product separates on a grid: 4 × 3 FMAs per point, the row stage (1.2 per point) shared by the 1000 points of a row |
 | W6 | | | the optimum segment count with vertices on the curve: fraction = optimum ÷ segments |
+| W7 | | | no hardware limit is stated: the work per query depends on how many pieces lie near it; rows report misses against the brute-force oracle |
 | W9 | | | no hardware limit is stated: the quadrature's node count depends on the curve; rows report error_rel against the oracle |
 """
 
@@ -483,6 +484,8 @@ CHECK_COUNTERS = ("max_error_rel", "data_error_rel", "mid_error_rel", "end_error
 def check_text(row):
     if not row.ok:
         return f"**FAILED**: {row.error}"
+    if row.counter("misses") is not None:  # W7: answers farther than the brute-force oracle
+        return f"misses {row.counter('misses'):.0f}, worst excess {row.counter('worst_excess_rel'):.1e} of the size"
     values = [f"{key.removesuffix('_rel').replace('_', ' ')} {row.counter(key):.1e}".replace(" 0.0e+00", " 0")
               for key in CHECK_COUNTERS if row.counter(key) is not None]
     return ", ".join(values) + (" of the scale" if values else "")
@@ -528,6 +531,7 @@ WORKLOAD_TITLES = OrderedDict(
     W4="W4: C² cubic interpolation of n 3D points, time per fit",
     W5="W5: bicubic B-spline surface (100 × 100 net) on a 1000 × 1000 grid",
     W6="W6: flattening a cubic Bézier spanning 100 units within 0.01",
+    W7="W7: closest point of random queries on a plane cubic Bézier and on W1's curve (in 3D and on the xy plane), time per query",
     W9="W9: arc length of W1's curve (997 cubic spans in 3D) within 1e-9 relative, time per length",
 )
 

@@ -104,6 +104,7 @@ struct Search {
   double best = INFINITY;    // the lowest squared distance seen
   double margin = 0.0;       // rounding of the squared distances compared
   std::vector<Candidate> candidates;
+  Point point, best_point;   // scratch for conclude()
 
   void consider(std::size_t piece, double t, double g) {
     if (g < best) best = g;
@@ -197,8 +198,12 @@ void search_polynomial_piece(const Prepared& prepared, std::size_t k, const doub
   std::copy(g, g + count, stack[top].c);
   ++top;
   while (top > 0) {
-    const Part part = stack[--top];
-    const double* c = part.c;
+    // The part's values are read into locals before its slot is reused by its halves.
+    const Part& slot = stack[--top];
+    const double a = slot.a, b = slot.b;
+    const int depth = slot.depth;
+    double c[kStackCoefficients];
+    std::copy(slot.c, slot.c + count, c);
     double lowest = c[0];
     for (int i = 1; i < count; ++i) lowest = std::min(lowest, c[i]);
     if (search.beaten(lowest)) continue;
@@ -206,8 +211,8 @@ void search_polynomial_piece(const Prepared& prepared, std::size_t k, const doub
     for (int i = 0; i < m; ++i) slope[i] = c[i + 1] - c[i];
     const int changes = sign_changes(slope, m);
     if (changes == 0) {  // monotone: its lower end
-      if (c[0] <= c[m]) search.consider(k, part.a, c[0]);
-      else search.consider(k, part.b, c[m]);
+      if (c[0] <= c[m]) search.consider(k, a, c[0]);
+      else search.consider(k, b, c[m]);
       continue;
     }
     if (changes == 1) {
@@ -218,15 +223,15 @@ void search_polynomial_piece(const Prepared& prepared, std::size_t k, const doub
         const double s = rising_root(slope, m);
         double value = 0.0, unused = 0.0;
         value_and_slope(c, count, s, value, unused);
-        search.consider(k, part.a + s * (part.b - part.a), value);
+        search.consider(k, a + s * (b - a), value);
       } else {  // rises then falls: the lower end
-        if (c[0] <= c[m]) search.consider(k, part.a, c[0]);
-        else search.consider(k, part.b, c[m]);
+        if (c[0] <= c[m]) search.consider(k, a, c[0]);
+        else search.consider(k, b, c[m]);
       }
       continue;
     }
-    const double middle = 0.5 * (part.a + part.b);
-    if (part.depth >= kMaxDepth) {
+    const double middle = 0.5 * (a + b);
+    if (depth >= kMaxDepth) {
       double value = 0.0, unused = 0.0;
       value_and_slope(c, count, 0.5, value, unused);
       search.consider(k, middle, value);
@@ -235,10 +240,9 @@ void search_polynomial_piece(const Prepared& prepared, std::size_t k, const doub
     // Halves by de Casteljau at 1/2; the right one below the left on the stack.
     Part& right = stack[top];
     Part& left = stack[top + 1];
-    right.a = middle, right.b = part.b, right.depth = part.depth + 1;
-    left.a = part.a, left.b = middle, left.depth = part.depth + 1;
-    double work[kStackCoefficients];
-    std::copy(c, c + count, work);
+    right.a = middle, right.b = b, right.depth = depth + 1;
+    left.a = a, left.b = middle, left.depth = depth + 1;
+    double* work = c;
     left.c[0] = work[0];
     right.c[m] = work[m];
     for (int r = 1; r <= m; ++r) {
@@ -387,12 +391,13 @@ double polish(const Prepared& prepared, std::size_t k, double t, const double* q
   return t;
 }
 
-/// The best of the candidates within the margin, polished; ties to the lowest parameter.
+/// The best of the candidates within the margin, polished; ties to the
+/// lowest parameter. The point goes to search.best_point.
 NearestPoint conclude(const Prepared& prepared, const double* q, Search& search, std::size_t& piece, double& local) {
-  const int d = prepared.dimension;
+  const std::size_t d = static_cast<std::size_t>(prepared.dimension);
+  search.point.resize(d);
+  search.best_point.resize(d);
   NearestPoint best;
-  best.point.assign(static_cast<std::size_t>(d), 0.0);
-  Point point(static_cast<std::size_t>(d));
   double best_g = INFINITY;
   std::sort(search.candidates.begin(), search.candidates.end(), [](const Candidate& x, const Candidate& y) {
     return x.piece != y.piece ? x.piece < y.piece : x.t < y.t;
@@ -403,12 +408,12 @@ NearestPoint conclude(const Prepared& prepared, const double* q, Search& search,
     if (previous != nullptr && previous->piece == candidate.piece && previous->t == candidate.t) continue;
     previous = &candidate;
     double g = 0.0;
-    const double t = polish(prepared, candidate.piece, candidate.t, q, point.data(), g);
+    const double t = polish(prepared, candidate.piece, candidate.t, q, search.point.data(), g);
     const double u = prepared.global(candidate.piece, t);
     if (g < best_g || (g == best_g && u < best.parameter)) {
       best_g = g;
       best.parameter = u;
-      best.point = point;
+      std::swap(search.point, search.best_point);
       piece = candidate.piece;
       local = t;
     }
@@ -472,7 +477,9 @@ Expected<NearestPoint> closest_point(CurveView curve, std::span<const double> qu
   Search search;
   std::size_t piece = 0;
   double local = 0.0;
-  return nearest(prepared, query.data(), search, piece, local, false);
+  NearestPoint answer = nearest(prepared, query.data(), search, piece, local, false);
+  answer.point = search.best_point;
+  return answer;
 }
 
 Status closest_points(CurveView curve, std::span<const double> queries, std::span<double> parameters,
