@@ -3,8 +3,6 @@
 // substituted, the roots of the resulting polynomial inverted and refined.
 #include "casteljau/ops/intersection.hpp"
 
-#include <Eigen/Dense>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -84,11 +82,12 @@ std::vector<Line> bezout_matrix(const BezierCurve& piece) {
 }
 
 /// p(t) = det(Bézout matrix of `implicit` at other(t)) times w(t)^n, in
-/// Bernstein form of degree n m, with the magnitude of its terms. Exact
-/// products for n <= 3; beyond, the determinant at n m + 1 points and the
-/// Bernstein-Vandermonde system (fine for the moderate degrees it meets).
+/// Bernstein form of degree n m, with the magnitude of its terms: the
+/// determinant expanded along its rows with every minor computed once
+/// (minors of the last rows indexed by their set of columns, 2^n of them),
+/// each product exact up to rounding (Farin §5.8).
 Bounded substituted(const BezierCurve& implicit, const BezierCurve& other) {
-  const int n = implicit.degree(), m = other.degree();
+  const int n = implicit.degree();
   const std::vector<Line> matrix = bezout_matrix(implicit);
   const PointArray h = homogeneous_points(other);
   std::vector<Bounded> entries(matrix.size());
@@ -100,35 +99,25 @@ Bounded substituted(const BezierCurve& implicit, const BezierCurve& other) {
                                      std::abs(line[2] * h[l][2]));
     }
   }
-  const auto at = [&](int i, int j) -> const Bounded& { return entries[static_cast<std::size_t>(i * n + j)]; };
-  if (n == 1) return at(0, 0);
-  if (n == 2) return combination(product(at(0, 0), at(1, 1)), -1.0, product(at(0, 1), at(1, 0)));
-  if (n == 3) {
-    Bounded det = product(at(0, 0), combination(product(at(1, 1), at(2, 2)), -1.0, product(at(1, 2), at(2, 1))));
-    det = combination(det, -1.0, product(at(0, 1), combination(product(at(1, 0), at(2, 2)), -1.0, product(at(1, 2), at(2, 0)))));
-    det = combination(det, 1.0, product(at(0, 2), combination(product(at(1, 0), at(2, 1)), -1.0, product(at(1, 1), at(2, 0)))));
-    return det;
+  // minors[S]: the determinant of the last |S| rows on the columns of S.
+  const std::size_t subsets = std::size_t{1} << n;
+  std::vector<Bounded> minors(subsets);
+  minors[0] = {{1.0}, {1.0}};
+  for (std::size_t set = 1; set < subsets; ++set) {
+    const int size = __builtin_popcountll(set);
+    const int row = n - size;
+    Bounded sum;
+    int position = 0;
+    for (int j = 0; j < n; ++j) {
+      if (!(set & (std::size_t{1} << j))) continue;
+      const Bounded term = product(entries[static_cast<std::size_t>(row * n + j)], minors[set & ~(std::size_t{1} << j)]);
+      sum = sum.value.empty() ? Bounded{std::vector<double>(term.value.size(), 0.0), std::vector<double>(term.value.size(), 0.0)} : sum;
+      sum = combination(sum, position % 2 == 0 ? 1.0 : -1.0, term);
+      ++position;
+    }
+    minors[set] = std::move(sum);
   }
-  const int count = n * m + 1;
-  Eigen::MatrixXd vandermonde(count, count);
-  Eigen::VectorXd values(count);
-  double largest = 0.0;
-  for (int k = 0; k < count; ++k) {
-    const double t = static_cast<double>(k) / (count - 1);
-    Eigen::MatrixXd at_t(n, n), magnitude_at_t(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        at_t(i, j) = bernstein_value(at(i, j).value, t);
-        magnitude_at_t(i, j) = bernstein_value(at(i, j).magnitude, t);
-      }
-    values(k) = at_t.fullPivLu().determinant();
-    largest = std::max(largest, std::abs(magnitude_at_t.fullPivLu().determinant()));
-    for (int i = 0; i < count; ++i) vandermonde(k, i) = binomial(count - 1, i) * std::pow(t, i) * std::pow(1 - t, count - 1 - i);
-  }
-  const Eigen::VectorXd coefficients = vandermonde.fullPivLu().solve(values);
-  Bounded result{std::vector<double>(coefficients.data(), coefficients.data() + count),
-                 std::vector<double>(static_cast<std::size_t>(count), largest * count)};
-  return result;
+  return minors[subsets - 1];
 }
 
 struct Hit {
@@ -141,10 +130,10 @@ struct Hit {
 double distance(const Point& p, const Point& q) { return std::hypot(p[0] - q[0], p[1] - q[1]); }
 
 /// Newton on A(s) - B(t) = 0 from a simple root, kept inside [0, 1]^2, each
-/// step kept only when the points come nearer.
+/// step halved until the points come nearer (at most 16 steps).
 void refine(const BezierCurve& a, const BezierCurve& b, double& s, double& t) {
   double gap = distance(point_at(a, s), point_at(b, t));
-  for (int iteration = 0; iteration < 8 && gap > 0.0; ++iteration) {
+  for (int iteration = 0; iteration < 16 && gap > 0.0; ++iteration) {
     const std::vector<Point> da = derivatives_up_to(a, s, 1), db = derivatives_up_to(b, t, 1);
     // [A' -B'] (ds, dt) = B - A.
     const double f0 = db[0][0] - da[0][0], f1 = db[0][1] - da[0][1];
@@ -152,8 +141,14 @@ void refine(const BezierCurve& a, const BezierCurve& b, double& s, double& t) {
     if (det == 0.0) break;
     const double ds = (-f0 * db[1][1] + db[1][0] * f1) / det;
     const double dt = (da[1][0] * f1 - da[1][1] * f0) / det;
-    const double s1 = std::clamp(s + ds, 0.0, 1.0), t1 = std::clamp(t + dt, 0.0, 1.0);
-    const double gap1 = distance(point_at(a, s1), point_at(b, t1));
+    // The step, halved until it brings the points nearer (near a tangency
+    // the Jacobian is nearly singular and the full step overshoots).
+    double factor = 1.0, s1 = s, t1 = t, gap1 = gap;
+    for (int halving = 0; halving < 30; ++halving, factor *= 0.5) {
+      s1 = std::clamp(s + factor * ds, 0.0, 1.0), t1 = std::clamp(t + factor * dt, 0.0, 1.0);
+      gap1 = distance(point_at(a, s1), point_at(b, t1));
+      if (gap1 < gap) break;
+    }
     if (!(gap1 < gap)) break;
     s = s1, t = t1, gap = gap1;
   }
@@ -179,98 +174,6 @@ int zone_multiplicity(const std::vector<double>& p, double t, double noise, int 
     if (std::abs(bernstein_value(d, t)) * std::pow(half, k) / factorial >= 0.1 * noise) return k;
   }
   return parity_hint;
-}
-
-/// The intersections of piece a with piece b (local parameters).
-std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double tolerance) {
-  std::vector<Hit> hits;
-  if (a.degree() == 0 || b.degree() == 0) {
-    // A point piece meets the other where it lies on it.
-    const bool a_point = a.degree() == 0;
-    const BezierCurve& point = a_point ? a : b;
-    const BezierCurve& curve = a_point ? b : a;
-    const Point p = point_at(point, 0.0);
-    const NearestPoint nearest = closest_point(curve, p).value();
-    if (nearest.distance <= tolerance)
-      hits.push_back({a_point ? 0.0 : nearest.parameter, a_point ? nearest.parameter : 0.0,
-                      IntersectionKind::transversal, 1});
-    return hits;
-  }
-  // Implicitize the piece of lower degree (the Bézout matrix is n x n).
-  const bool swap = a.degree() > b.degree();
-  const BezierCurve& implicit = swap ? b : a;
-  const BezierCurve& other = swap ? a : b;
-  const auto emit = [&](double s_implicit, double t_other, IntersectionKind kind, int multiplicity) {
-    hits.push_back(swap ? Hit{t_other, s_implicit, kind, multiplicity} : Hit{s_implicit, t_other, kind, multiplicity});
-  };
-  const Bounded p = substituted(implicit, other);
-  double largest_magnitude = 0.0, largest = 0.0;
-  for (std::size_t i = 0; i < p.value.size(); ++i) {
-    largest_magnitude = std::max(largest_magnitude, p.magnitude[i]);
-    largest = std::max(largest, std::abs(p.value[i]));
-  }
-  const double noise = tolerances::kRoundingSlack * static_cast<double>(p.value.size()) * 4.0 * largest_magnitude;
-  if (largest <= noise) {
-    // One algebraic curve: the end points of each piece that lie on the other.
-    struct Pair {
-      double s, t;
-    };
-    std::vector<Pair> pairs;
-    for (const double t : {0.0, 1.0}) {
-      const NearestPoint on = closest_point(implicit, point_at(other, t)).value();
-      if (on.distance <= tolerance) pairs.push_back({on.parameter, t});
-    }
-    for (const double s : {0.0, 1.0}) {
-      const NearestPoint on = closest_point(other, point_at(implicit, s)).value();
-      if (on.distance <= tolerance) pairs.push_back({s, on.parameter});
-    }
-    std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.s < y.s; });
-    if (pairs.empty()) return hits;
-    const Pair first = pairs.front(), last = pairs.back();
-    if (last.s - first.s > 1e-9) {
-      Hit overlap = swap ? Hit{first.t, first.s, IntersectionKind::overlap, 0}
-                         : Hit{first.s, first.t, IntersectionKind::overlap, 0};
-      overlap.s_end = swap ? last.t : last.s;
-      overlap.t_end = swap ? last.s : last.t;
-      if (overlap.s_end < overlap.s) {
-        std::swap(overlap.s, overlap.s_end);
-        std::swap(overlap.t, overlap.t_end);
-      }
-      hits.push_back(overlap);
-    } else {
-      emit(first.s, first.t, IntersectionKind::tangent, 0);
-    }
-    return hits;
-  }
-  for (const BernsteinRoot& root : bernstein_roots(p.value)) {
-    const Point on_other = point_at(other, root.t);
-    const std::vector<NearestPoint> feet = local_closest_points(implicit, on_other).value();
-    std::vector<double> branches;
-    for (const NearestPoint& foot : feet)
-      if (foot.distance <= tolerance) branches.push_back(foot.parameter);
-    std::sort(branches.begin(), branches.end());
-    int multiplicity = root.multiplicity;
-    if (multiplicity >= 2 && branches.size() == 1) multiplicity = zone_multiplicity(p.value, root.t, noise, multiplicity);
-    for (const double s0 : branches) {
-      double s = s0, t = root.t;
-      if (multiplicity == 1 || branches.size() > 1) {
-        // A simple root, or one branch of the implicit curve's double point:
-        // transversal where the tangents differ.
-        const Point ta = derivative_at(implicit, s, 1), tb = derivative_at(other, t, 1);
-        const double sine = std::abs(ta[0] * tb[1] - ta[1] * tb[0]) /
-                            std::max(std::hypot(ta[0], ta[1]) * std::hypot(tb[0], tb[1]), tolerances::kScaleFloor);
-        if (multiplicity == 1 || sine > 1e-6) {
-          refine(implicit, other, s, t);
-          emit(s, t, IntersectionKind::transversal, 1);
-          continue;
-        }
-        emit(s, t, IntersectionKind::tangent, std::max(2, multiplicity - static_cast<int>(branches.size()) + 1));
-        continue;
-      }
-      emit(s, t, IntersectionKind::tangent, multiplicity);
-    }
-  }
-  return hits;
 }
 
 bool boxes_meet(const BezierCurve& a, const BezierCurve& b, double tolerance) {
@@ -348,56 +251,6 @@ void injective_parts(const BezierCurve& curve, Interval span, int depth, std::ve
   injective_parts(halves.second, {middle, span.upper}, depth + 1, parts);
 }
 
-/// Crossings of two parts of one piece (one algebraic curve, so not by
-/// implicitization): pairs of sub-parts whose boxes meet, halved down to
-/// 1e-6 of the piece, then Newton on P(s) - Q(t) = 0; kept when it
-/// converges to a few ulps of the scale with the two parameters apart and
-/// the loop between them reaching beyond the tolerance.
-void part_crossings(const BezierCurve& piece, const Part& p, const Part& q, double scale, double tolerance,
-                    std::vector<std::pair<double, double>>& found) {
-  struct Pair {
-    Interval s, t;
-    BezierCurve a, b;
-  };
-  std::vector<Pair> stack{{p.span, q.span, p.curve, q.curve}};
-  const double converged = 64 * 2.220446049250313e-16 * std::max(scale, tolerances::kScaleFloor);
-  while (!stack.empty()) {
-    Pair pair = std::move(stack.back());
-    stack.pop_back();
-    if (!boxes_meet(pair.a, pair.b, converged)) continue;
-    const double width = std::max(pair.s.length(), pair.t.length());
-    if (width > 1e-6) {
-      const bool split_a = pair.s.length() >= pair.t.length();
-      const auto halves = split_at(split_a ? pair.a : pair.b, 0.5).value();
-      const Interval& span = split_a ? pair.s : pair.t;
-      const double middle = 0.5 * (span.lower + span.upper);
-      if (split_a) {
-        stack.push_back({{middle, span.upper}, pair.t, halves.second, pair.b});
-        stack.push_back({{span.lower, middle}, pair.t, halves.first, pair.b});
-      } else {
-        stack.push_back({pair.s, {middle, span.upper}, pair.a, halves.second});
-        stack.push_back({pair.s, {span.lower, middle}, pair.a, halves.first});
-      }
-      continue;
-    }
-    // Newton on the whole piece from the middles, parameters local to the piece.
-    double s = 0.5 * (pair.s.lower + pair.s.upper), t = 0.5 * (pair.t.lower + pair.t.upper);
-    refine(piece, piece, s, t);
-    if (distance(point_at(piece, s), point_at(piece, t)) > converged) continue;
-    if (std::abs(s - t) <= 1e-9) continue;  // the same point (the parts' joint)
-    // The loop between s and t must reach beyond the tolerance: near a cusp
-    // C(s) and C(t) come within rounding of each other for s != t, on a
-    // "loop" far smaller than any tolerance (of the size delta^2 for
-    // parameters delta from the cusp).
-    if (!(distance(point_at(piece, s), point_at(piece, 0.5 * (s + t))) > tolerance)) continue;
-    if (s > t) std::swap(s, t);
-    const bool seen = std::any_of(found.begin(), found.end(), [&](const std::pair<double, double>& f) {
-      return std::abs(f.first - s) <= 1e-12 && std::abs(f.second - t) <= 1e-12;
-    });
-    if (!seen) found.emplace_back(s, t);
-  }
-}
-
 /// The hits of every piece pair as the result: overlaps of consecutive
 /// pieces joined, each point once (a hit at a knot is seen from both
 /// pieces), none inside an overlap, sorted by the parameter on a.
@@ -420,10 +273,13 @@ std::vector<CurveIntersection> merged(std::vector<CurveIntersection> points, std
   }
   // Points: once each (a hit at a knot is seen from both pieces), none inside an overlap.
   const auto inside = [&](const CurveIntersection& p, const CurveIntersection& o) {
-    const double slack_a = 1e-9 * width_a, slack_b = 1e-9 * width_b;
-    const double b_low = std::min(o.b.lower, o.b.upper), b_high = std::max(o.b.lower, o.b.upper);
-    return p.a.lower >= o.a.lower - slack_a && p.a.lower <= o.a.upper + slack_a && p.b.lower >= b_low - slack_b &&
-           p.b.lower <= b_high + slack_b;
+    // On the overlap's own diagonal: b where the overlap puts a's point (the
+    // parameterizations of one curve by polynomial pieces of one degree are
+    // affine in each other); a crossing at a double point lies off it.
+    const double slack_a = 1e-9 * width_a, slack_b = 1e-6 * width_b;
+    if (p.a.lower < o.a.lower - slack_a || p.a.lower > o.a.upper + slack_a) return false;
+    const double f = o.a.length() > 0.0 ? (p.a.lower - o.a.lower) / o.a.length() : 0.0;
+    return std::abs(p.b.lower - (o.b.lower + f * (o.b.upper - o.b.lower))) <= slack_b;
   };
   std::sort(points.begin(), points.end(),
             [](const CurveIntersection& x, const CurveIntersection& y) { return x.a.lower < y.a.lower; });
@@ -446,6 +302,335 @@ std::vector<CurveIntersection> merged(std::vector<CurveIntersection> points, std
   std::sort(result.begin(), result.end(),
             [](const CurveIntersection& x, const CurveIntersection& y) { return x.a.lower < y.a.lower; });
   return result;
+}
+
+/// Whether the segment from (s0, t0) to (s1, t1) passes within `margin` of
+/// the rectangle si x ti of parameters (Liang–Barsky clipping): the pairs of
+/// sub-curves along an overlap's diagonal, where every pair meets.
+bool along_segment(Interval si, Interval ti, double s0, double t0, double s1, double t1, double margin) {
+  double low = 0.0, high = 1.0;
+  const double ds = s1 - s0, dt = t1 - t0;
+  const auto clip = [&](double p, double q) {
+    if (p == 0.0) return q >= 0.0;
+    const double r = q / p;
+    if (p < 0.0) low = std::max(low, r);
+    else high = std::min(high, r);
+    return low <= high;
+  };
+  return clip(-ds, s0 - (si.lower - margin)) && clip(ds, (si.upper + margin) - s0) && clip(-dt, t0 - (ti.lower - margin)) &&
+         clip(dt, (ti.upper + margin) - t0);
+}
+
+/// The order of contact of two branches meeting with one tangent line at
+/// a(s) = b(t): 2 where their signed curvatures (b's taken along a's
+/// direction) differ, 3 where the curvatures agree but not their rates of
+/// change along the arc, 4 beyond (the corpus' highest contacts).
+int contact_order(const BezierCurve& a, double s, const BezierCurve& b, double t) {
+  const auto curvature = [](const BezierCurve& c, double u, double& speed) {
+    const std::vector<Point> d = derivatives_up_to(c, std::clamp(u, 0.0, 1.0), 2);
+    speed = std::hypot(d[1][0], d[1][1]);
+    return (d[1][0] * d[2][1] - d[1][1] * d[2][0]) / std::max(speed * speed * speed, tolerances::kScaleFloor);
+  };
+  double speed_a = 0.0, speed_b = 0.0;
+  const double ka = curvature(a, s, speed_a);
+  const double kb0 = curvature(b, t, speed_b);
+  const Point ta = derivative_at(a, s, 1), tb = derivative_at(b, t, 1);
+  const double orientation = ta[0] * tb[0] + ta[1] * tb[1] >= 0.0 ? 1.0 : -1.0;
+  const double kb = orientation * kb0;
+  const double size = std::max(size_of(a), size_of(b));
+  const double scale = std::max({std::abs(ka), std::abs(kb), 1.0 / std::max(size, tolerances::kScaleFloor)});
+  if (std::abs(ka - kb) > 1e-4 * scale) return 2;
+  // Rates of change along the arc, by central differences over 1e-4 of each piece.
+  const double h = 1e-4;
+  double unused = 0.0;
+  const double rate_a = (curvature(a, s + h, unused) - curvature(a, s - h, unused)) / (2 * h * std::max(speed_a, 1e-300));
+  const double rate_b = orientation * orientation *
+                        (curvature(b, t + orientation * h, unused) - curvature(b, t - orientation * h, unused)) /
+                        (2 * h * std::max(speed_b, 1e-300)) * orientation;
+  const double rate_scale = std::max({std::abs(rate_a), std::abs(rate_b), scale / std::max(size, tolerances::kScaleFloor)});
+  return std::abs(rate_a - rate_b) > 1e-2 * rate_scale ? 3 : 4;
+}
+
+/// Where two pieces meet that their implicit equations cannot tell apart
+/// (parts of one piece, or two pieces of one algebraic curve crossing at its
+/// double point): pairs of sub-curves whose boxes meet, halved down to 1e-6
+/// of a piece (at most kMaxPairs pairs), then Newton on a(s) - b(t) = 0 from
+/// their middles. A solution is kept as a crossing when it converges to a few
+/// ulps of the scale with distinct tangents, as a tangency (one per cluster,
+/// multiplicity contact_order) when the points come within the tolerance
+/// with one tangent line. `skip(s, t)` drops the pairs already known (an
+/// overlap's diagonal, the parts' joint); for parts of one piece
+/// (`same_curve`) a solution needs s < t and a loop between them that
+/// reaches beyond the tolerance (near a cusp C(s) and C(t) come within
+/// rounding on loops of the size (t - s)^2).
+template <class Skip>
+void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& part_a, const BezierCurve& b,
+                     Interval span_b, const BezierCurve& part_b, bool same_curve, double tolerance, Skip&& skip,
+                     std::vector<Hit>& found) {
+  struct Pair {
+    Interval s, t;
+    BezierCurve a, b;
+  };
+  constexpr std::size_t kMaxPairs = 200000;
+  std::vector<Pair> stack{{span_a, span_b, part_a, part_b}};
+  const double scale = std::max(size_of(a), size_of(b));
+  const double converged = 64 * 2.220446049250313e-16 * std::max(scale, tolerances::kScaleFloor);
+  std::size_t visited = 0;
+  const std::size_t first_new = found.size();
+  std::vector<std::vector<std::pair<double, double>>> zones;  // the solutions of each new hit
+  while (!stack.empty() && ++visited < kMaxPairs) {
+    Pair pair = std::move(stack.back());
+    stack.pop_back();
+    if (!boxes_meet(pair.a, pair.b, tolerance)) continue;
+    if (skip(pair.s, pair.t)) continue;
+    if (std::max(pair.s.length(), pair.t.length()) > 1e-6) {
+      const bool split_a = pair.s.length() >= pair.t.length();
+      const auto halves = split_at(split_a ? pair.a : pair.b, 0.5).value();
+      const Interval& span = split_a ? pair.s : pair.t;
+      const double middle = 0.5 * (span.lower + span.upper);
+      if (split_a) {
+        stack.push_back({{middle, span.upper}, pair.t, halves.second, pair.b});
+        stack.push_back({{span.lower, middle}, pair.t, halves.first, pair.b});
+      } else {
+        stack.push_back({pair.s, {middle, span.upper}, pair.a, halves.second});
+        stack.push_back({pair.s, {span.lower, middle}, pair.a, halves.first});
+      }
+      continue;
+    }
+    double s = 0.5 * (pair.s.lower + pair.s.upper), t = 0.5 * (pair.t.lower + pair.t.upper);
+    refine(a, b, s, t);
+    const double gap = distance(point_at(a, s), point_at(b, t));
+    if (gap > tolerance) continue;
+    if (same_curve) {
+      if (std::abs(s - t) <= 1e-9) continue;
+      if (!(distance(point_at(a, s), point_at(a, 0.5 * (s + t))) > tolerance)) continue;
+      if (s > t) std::swap(s, t);
+    }
+    const Point ds = derivative_at(a, s, 1), dt = derivative_at(b, t, 1);
+    const double sine = std::abs(ds[0] * dt[1] - ds[1] * dt[0]) /
+                        std::max(std::hypot(ds[0], ds[1]) * std::hypot(dt[0], dt[1]), tolerances::kScaleFloor);
+    const bool crossing = sine > 1e-6;
+    if (crossing && gap > converged) continue;
+    // Crossings seen twice land within rounding; tangent solutions spread
+    // over the contact zone, where the curves stay within the tolerance: one
+    // tangency per zone.
+    const auto seen = std::find_if(found.begin() + static_cast<std::ptrdiff_t>(first_new), found.end(), [&](const Hit& f) {
+      if (crossing) return f.kind == IntersectionKind::transversal && std::abs(f.s - s) <= 1e-12 && std::abs(f.t - t) <= 1e-12;
+      if (f.kind != IntersectionKind::tangent || std::abs(f.s - s) > 5e-2 || std::abs(f.t - t) > 5e-2) return false;
+      return distance(point_at(a, 0.5 * (f.s + s)), point_at(b, 0.5 * (f.t + t))) <= tolerance;
+    });
+    if (seen != found.end()) {
+      if (!crossing) zones[static_cast<std::size_t>(seen - found.begin()) - first_new].push_back({s, t});
+      continue;
+    }
+    found.push_back({s, t, crossing ? IntersectionKind::transversal : IntersectionKind::tangent, crossing ? 1 : 2});
+    zones.push_back({{s, t}});
+  }
+  // A zone's tangency: its median solution (a pair that meets, in the middle of the zone).
+  for (std::size_t k = first_new; k < found.size(); ++k) {
+    if (found[k].kind != IntersectionKind::tangent) continue;
+    std::vector<std::pair<double, double>>& zone = zones[k - first_new];
+    std::sort(zone.begin(), zone.end());
+    found[k].s = zone[zone.size() / 2].first;
+    found[k].t = zone[zone.size() / 2].second;
+  }
+  for (std::size_t k = first_new; k < found.size(); ++k)
+    if (found[k].kind == IntersectionKind::tangent) found[k].multiplicity = contact_order(a, found[k].s, b, found[k].t);
+}
+
+/// Tangencies of one contact zone found from several pairs of parts: one,
+/// the median of the zone's (a pair that meets, inside the zone). A
+/// tangency joins a zone when it lies within 1e-3 of one of the zone's in
+/// both parameters (contact zones are about sqrt(tolerance / curvature)
+/// wide), or the curves stay within the tolerance at the pair of their middles.
+void merge_tangent_zones(const BezierCurve& a, const BezierCurve& b, double tolerance, std::vector<Hit>& hits) {
+  std::vector<Hit> result;
+  std::vector<std::vector<Hit>> zones;
+  for (const Hit& hit : hits) {
+    if (hit.kind != IntersectionKind::tangent) {
+      result.push_back(hit);
+      continue;
+    }
+    bool joined = false;
+    for (auto& zone : zones) {
+      const bool near = std::any_of(zone.begin(), zone.end(), [&](const Hit& f) {
+        if (std::abs(f.s - hit.s) > 5e-2 || std::abs(f.t - hit.t) > 5e-2) return false;
+        if (std::abs(f.s - hit.s) <= 1e-3 && std::abs(f.t - hit.t) <= 1e-3) return true;
+        return distance(point_at(a, 0.5 * (f.s + hit.s)), point_at(b, 0.5 * (f.t + hit.t))) <= tolerance;
+      });
+      if (near) {
+        zone.push_back(hit);
+        joined = true;
+        break;
+      }
+    }
+    if (!joined) zones.push_back({hit});
+  }
+  for (auto& zone : zones) {
+    std::sort(zone.begin(), zone.end(), [](const Hit& x, const Hit& y) { return x.s < y.s; });
+    result.push_back(zone[zone.size() / 2]);
+  }
+  hits = std::move(result);
+}
+
+/// The intersections of piece a with piece b (local parameters).
+std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double tolerance) {
+  std::vector<Hit> hits;
+  if (a.degree() == 0 || b.degree() == 0) {
+    // A point piece meets the other where it lies on it.
+    const bool a_point = a.degree() == 0;
+    const BezierCurve& point = a_point ? a : b;
+    const BezierCurve& curve = a_point ? b : a;
+    const Point p = point_at(point, 0.0);
+    const NearestPoint nearest = closest_point(curve, p).value();
+    if (nearest.distance <= tolerance)
+      hits.push_back({a_point ? 0.0 : nearest.parameter, a_point ? nearest.parameter : 0.0,
+                      IntersectionKind::transversal, 1});
+    return hits;
+  }
+  // Implicitize the piece of lower degree (the Bézout matrix is n x n).
+  const bool swap = a.degree() > b.degree();
+  const BezierCurve& implicit = swap ? b : a;
+  const BezierCurve& other = swap ? a : b;
+  const auto emit = [&](double s_implicit, double t_other, IntersectionKind kind, int multiplicity) {
+    hits.push_back(swap ? Hit{t_other, s_implicit, kind, multiplicity} : Hit{s_implicit, t_other, kind, multiplicity});
+  };
+  const Bounded p = substituted(implicit, other);
+  double largest_magnitude = 0.0, largest = 0.0;
+  for (std::size_t i = 0; i < p.value.size(); ++i) {
+    largest_magnitude = std::max(largest_magnitude, p.magnitude[i]);
+    largest = std::max(largest, std::abs(p.value[i]));
+  }
+  const double noise = tolerances::kRoundingSlack * static_cast<double>(p.value.size()) * 4.0 * largest_magnitude;
+  if (largest <= noise) {
+    // One algebraic curve: the end points of each piece that lie on the other.
+    struct Pair {
+      double s, t;
+    };
+    std::vector<Pair> pairs;
+    for (const double t : {0.0, 1.0}) {
+      const NearestPoint on = closest_point(implicit, point_at(other, t)).value();
+      if (on.distance <= tolerance) pairs.push_back({on.parameter, t});
+    }
+    for (const double s : {0.0, 1.0}) {
+      const NearestPoint on = closest_point(other, point_at(implicit, s)).value();
+      if (on.distance <= tolerance) pairs.push_back({s, on.parameter});
+    }
+    std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.s < y.s; });
+    // Crossings where the algebraic curve passes twice through a point (a
+    // double point), away from the shared stretch or point.
+    std::vector<Hit> crossings;
+    const auto shared = [&](Interval si, Interval ti) {
+      // Pairs along the shared stretch all meet: dropped once small, not at the start.
+      if (pairs.empty() || std::max(si.length(), ti.length()) > 1e-3) return false;
+      return along_segment(si, ti, pairs.front().s, pairs.front().t, pairs.back().s, pairs.back().t, 1e-6);
+    };
+    subdivided_hits(implicit, {0.0, 1.0}, implicit, other, {0.0, 1.0}, other, false, tolerance, shared, crossings);
+    for (const Hit& crossing : crossings) emit(crossing.s, crossing.t, crossing.kind, crossing.multiplicity);
+    if (pairs.empty()) return hits;
+    const Pair first = pairs.front(), last = pairs.back();
+    if (last.s - first.s > 1e-9) {
+      Hit overlap = swap ? Hit{first.t, first.s, IntersectionKind::overlap, 0}
+                         : Hit{first.s, first.t, IntersectionKind::overlap, 0};
+      overlap.s_end = swap ? last.t : last.s;
+      overlap.t_end = swap ? last.s : last.t;
+      if (overlap.s_end < overlap.s) {
+        std::swap(overlap.s, overlap.s_end);
+        std::swap(overlap.t, overlap.t_end);
+      }
+      hits.push_back(overlap);
+    } else {
+      emit(first.s, first.t, IntersectionKind::tangent, 0);
+    }
+    return hits;
+  }
+  // How far a simple root's point may be from the implicitized piece before
+  // Newton: 1e-6 of the pieces' size.
+  constexpr double kLooseRoot = 1e-6;
+  const double scale = std::max(size_of(implicit), size_of(other));
+  // A zone of p may hide crossings closer than rounding lets p tell apart
+  // (two crossings 1e-6 apart, the curves 1e-9 apart between them): Newton
+  // on the pair from either side of the zone finds them when they are there
+  // (emitted, true); a true tangency gives it nothing that converges.
+  const double converged = 64 * 2.220446049250313e-16 * std::max(scale, tolerances::kScaleFloor);
+  const auto split_zone = [&](double s, double t, int multiplicity) {
+    if (multiplicity != 2) return false;
+    std::vector<std::pair<double, double>> crossings;
+    for (const double offset : {-1e-5, -1e-6, -1e-7, 1e-7, 1e-6, 1e-5}) {
+      double tc = std::clamp(t + offset, 0.0, 1.0);
+      double sc = closest_point(implicit, point_at(other, tc)).value().parameter;
+      refine(implicit, other, sc, tc);
+      if (distance(point_at(implicit, sc), point_at(other, tc)) > converged) continue;
+      if (std::abs(tc - t) > 1e-4 || std::abs(sc - s) > 1e-4) continue;  // another intersection's
+      const bool seen = std::any_of(crossings.begin(), crossings.end(), [&](const std::pair<double, double>& c) {
+        // Newton lands within about 1e-11 of a crossing this close to a tangency.
+        return std::abs(c.first - sc) <= 1e-9 && std::abs(c.second - tc) <= 1e-9;
+      });
+      if (!seen) crossings.emplace_back(sc, tc);
+    }
+    if (crossings.size() != 2) return false;
+    // Two crossings part the curves between them; near a true tangency
+    // Newton also comes within rounding on both sides, where the curves
+    // never part: between such points they stay within rounding.
+    const double middle_s = 0.5 * (crossings[0].first + crossings[1].first);
+    if (!(closest_point(other, point_at(implicit, middle_s)).value().distance > 16 * converged)) return false;
+    for (const auto& [sc, tc] : crossings) emit(sc, tc, IntersectionKind::transversal, 1);
+    return true;
+  };
+  for (const BernsteinRoot& root : bernstein_roots(p.value)) {
+    const Point on_other = point_at(other, root.t);
+    const std::vector<NearestPoint> feet = local_closest_points(implicit, on_other).value();
+    // A simple root of a high-degree p may be off by more than the tolerance
+    // allows (its rounding grows with the degree): its feet within a looser
+    // bound are refined by Newton on the pair first, then held to the tolerance.
+    // A multiple root is known to about the square root of the rounding: its
+    // point may miss the piece by more than the tolerance where the contact
+    // is at the piece's end (the zone's middle slid past it). Such a foot is
+    // brought to the nearest pair of points by alternate projections.
+    const double loose = std::max(tolerance, kLooseRoot * scale);
+    std::vector<double> branches;
+    for (const NearestPoint& foot : feet) {
+      if (foot.distance <= tolerance) {
+        branches.push_back(foot.parameter);
+      } else if (foot.distance <= loose && root.multiplicity == 1) {
+        double s = foot.parameter, t = root.t;
+        refine(implicit, other, s, t);
+        if (distance(point_at(implicit, s), point_at(other, t)) <= tolerance) emit(s, t, IntersectionKind::transversal, 1);
+      } else if (foot.distance <= loose) {
+        double s = foot.parameter, t = root.t;
+        if (split_zone(s, t, root.multiplicity)) continue;
+        for (int step = 0; step < 4; ++step) {
+          t = closest_point(other, point_at(implicit, s)).value().parameter;
+          s = closest_point(implicit, point_at(other, t)).value().parameter;
+        }
+        if (distance(point_at(implicit, s), point_at(other, t)) <= tolerance)
+          emit(s, t, IntersectionKind::tangent, zone_multiplicity(p.value, root.t, noise, root.multiplicity));
+      }
+    }
+    std::sort(branches.begin(), branches.end());
+    int multiplicity = root.multiplicity;
+    if (multiplicity >= 2 && branches.size() == 1) multiplicity = zone_multiplicity(p.value, root.t, noise, multiplicity);
+    for (const double s0 : branches) {
+      double s = s0, t = root.t;
+      if (multiplicity == 1 || branches.size() > 1) {
+        // A simple root, or one branch of the implicit curve's double point:
+        // transversal where the tangents differ.
+        const Point ta = derivative_at(implicit, s, 1), tb = derivative_at(other, t, 1);
+        const double sine = std::abs(ta[0] * tb[1] - ta[1] * tb[0]) /
+                            std::max(std::hypot(ta[0], ta[1]) * std::hypot(tb[0], tb[1]), tolerances::kScaleFloor);
+        if (multiplicity == 1 || sine > 1e-6) {
+          refine(implicit, other, s, t);
+          emit(s, t, IntersectionKind::transversal, 1);
+          continue;
+        }
+        emit(s, t, IntersectionKind::tangent, std::max(2, multiplicity - static_cast<int>(branches.size()) + 1));
+        continue;
+      }
+      if (split_zone(s, t, multiplicity)) continue;
+      emit(s, t, IntersectionKind::tangent, multiplicity);
+    }
+  }
+  return hits;
 }
 
 }  // namespace
@@ -511,12 +696,14 @@ Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tol
     // Inside piece i: its injective parts against each other.
     std::vector<Part> parts;
     injective_parts(pieces.pieces[i], {0.0, 1.0}, 0, parts);
-    std::vector<std::pair<double, double>> crossings;
+    std::vector<Hit> inside;
+    const auto nothing = [](Interval, Interval) { return false; };
     for (std::size_t p = 0; p < parts.size(); ++p)
       for (std::size_t q = p + 1; q < parts.size(); ++q)
-        part_crossings(pieces.pieces[i], parts[p], parts[q], size_of(pieces.pieces[i]), tolerance.distance, crossings);
-    for (const auto& [s, t] : crossings)
-      record(Hit{s, t, IntersectionKind::transversal, 1}, pieces.pieces[i], span_i, span_i, points, overlaps);
+        subdivided_hits(pieces.pieces[i], parts[p].span, parts[p].curve, pieces.pieces[i], parts[q].span,
+                        parts[q].curve, true, tolerance.distance, nothing, inside);
+    merge_tangent_zones(pieces.pieces[i], pieces.pieces[i], tolerance.distance, inside);
+    for (const Hit& hit : inside) record(hit, pieces.pieces[i], span_i, span_i, points, overlaps);
     // Piece i against the later pieces.
     for (std::size_t k = i + 1; k < count; ++k) {
       if (!boxes_meet(pieces.pieces[i], pieces.pieces[k], tolerance.distance)) continue;
