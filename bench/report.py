@@ -67,6 +67,7 @@ fractions are lower by nature.
 | W5 (grid) | 13 | 24 | the tensor product separates on a grid: 4 × 3 FMAs per point, the row stage (1.2 per point) shared by the 1000 points of a row |
 | W6 | | | the optimum segment count with vertices on the curve: fraction = optimum ÷ segments |
 | W7 | | | no hardware limit is stated: the work per query depends on how many pieces lie near it; rows report misses against the brute-force oracle |
+| W8 | | | no hardware limit is stated: the work per pair depends on how the curves meet; rows report misses and spurious points against the exact oracle |
 | W9 | | | no hardware limit is stated: the quadrature's node count depends on the curve; rows report error_rel against the oracle |
 """
 
@@ -484,6 +485,8 @@ CHECK_COUNTERS = ("max_error_rel", "data_error_rel", "mid_error_rel", "end_error
 def check_text(row):
     if not row.ok:
         return f"**FAILED**: {row.error}"
+    if row.counter("spurious") is not None:  # W8: pairs judged against the exact oracle
+        return f"pairs with a miss {row.counter('misses'):.0f}, with a spurious point {row.counter('spurious'):.0f}"
     if row.counter("misses") is not None:  # W7: answers farther than the brute-force oracle
         return f"misses {row.counter('misses'):.0f}, worst excess {row.counter('worst_excess_rel'):.1e} of the size"
     values = [f"{key.removesuffix('_rel').replace('_', ' ')} {row.counter(key):.1e}".replace(" 0.0e+00", " 0")
@@ -532,6 +535,7 @@ WORKLOAD_TITLES = OrderedDict(
     W5="W5: bicubic B-spline surface (100 × 100 net) on a 1000 × 1000 grid",
     W6="W6: flattening a cubic Bézier spanning 100 units within 0.01",
     W7="W7: closest point of random queries on a plane cubic Bézier and on W1's curve (in 3D and on the xy plane), time per query",
+    W8="W8: intersections of 10⁴ pairs of plane cubic Béziers (10% tangent, 10% near-tangent), time per pair",
     W9="W9: arc length of W1's curve (997 cubic spans in 3D) within 1e-9 relative, time per length",
 )
 

@@ -1,7 +1,9 @@
 // W9 (issue 16): the arc length of W1's curve (bench/w1_curve.hpp: a cubic
 // B-spline in 3D, 1000 random control points, 997 spans) at 1e-9 relative
 // accuracy. Rows: W9/arc-length/<impl>, one whole length per iteration
-// (items = 1 curve), casteljau's including its setup (the Bézier pieces).
+// (items = 1 curve), casteljau's including its setup (the Bézier pieces);
+// W9/arc-length-xy/<impl> the same curve projected on the xy plane, for the
+// plane-only peer kurbo (its 997 cubic pieces, each to its share).
 //
 // Oracle: casteljau at 1e-13 of the curve's size, cross-checked once against
 // OpenCASCADE's GCPnts_AbscissaPoint::Length at its tightest tolerance (an
@@ -22,7 +24,14 @@
 
 #if defined(CASTELJAU_HAVE_OCCT)
 #include <GCPnts_AbscissaPoint.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <Geom2d_BSplineCurve.hxx>
 #include <GeomAdaptor_Curve.hxx>
+#include <TColgp_Array1OfPnt2d.hxx>
+#endif
+#if defined(CASTELJAU_HAVE_RUST_PEERS)
+#include "casteljau/bspline/bezier_pieces.hpp"
+#include "rust_peers.h"
 #endif
 
 namespace {
@@ -62,10 +71,72 @@ double sisl_length(double relative) {
 }
 #endif
 
+/// W1's curve with its z dropped: the plane curve the plane-only peers
+/// (kurbo) measure (rows W9/arc-length-xy/<impl>).
+const BSplineCurve& plane() {
+  static const BSplineCurve c = [] {
+    std::vector<double> xy;
+    for (std::size_t i = 0; i < curve().control_points().size(); ++i) {
+      xy.push_back(curve().control_points()[i][0]);
+      xy.push_back(curve().control_points()[i][1]);
+    }
+    return BSplineCurve::from_trusted(curve().degree(), std::vector<double>(curve().knots().begin(), curve().knots().end()),
+                                      casteljau::PointArray::from_trusted(2, std::move(xy)));
+  }();
+  return c;
+}
+
+double casteljau_plane_length(double relative) {
+  return casteljau::arc_length(plane(), casteljau::Tolerance{relative * casteljau::size_of(plane())}).value();
+}
+
+#if defined(CASTELJAU_HAVE_OCCT)
+/// The plane curve as OpenCASCADE's Geom2d_BSplineCurve, GCPnts_AbscissaPoint on it.
+double occt_plane_length(double relative) {
+  static const Handle(Geom2d_BSplineCurve) c = [] {
+    const casteljau::bench::OcctW1& w1 = casteljau::bench::occt_w1();
+    TColgp_Array1OfPnt2d poles(1, w1.poles.Length());
+    for (int i = 1; i <= w1.poles.Length(); ++i) poles.SetValue(i, gp_Pnt2d(w1.poles(i).X(), w1.poles(i).Y()));
+    return Handle(Geom2d_BSplineCurve)(new Geom2d_BSplineCurve(poles, w1.knots, w1.mults, casteljau::bench::kW1Degree));
+  }();
+  Geom2dAdaptor_Curve adaptor(c);
+  return GCPnts_AbscissaPoint::Length(adaptor, relative);
+}
+#endif
+
+#if defined(CASTELJAU_HAVE_RUST_PEERS)
+/// kurbo's ParamCurveArclen on the plane curve's 997 cubic pieces, each to
+/// its share of the accuracy (kurbo's accuracy is absolute per call).
+double kurbo_plane_length(double relative) {
+  static const std::vector<double> cubics = [] {
+    std::vector<double> all;
+    for (const casteljau::BezierCurve& piece : casteljau::to_bezier_pieces(plane()).pieces) {
+      const auto c = piece.control_points().coordinates();
+      all.insert(all.end(), c.begin(), c.end());
+    }
+    return all;
+  }();
+  const std::size_t count = cubics.size() / 8;
+  return casteljau_kurbo_path_arclen(cubics.data(), count,
+                                     relative * casteljau::size_of(plane()) / static_cast<double>(count));
+}
+#endif
+
 struct Oracle {
   double length = NAN;
   double agreement = NAN;  // relative difference to OpenCASCADE's tightest, NaN without it
 };
+
+const Oracle& plane_oracle() {
+  static const Oracle o = [] {
+    Oracle result{casteljau_plane_length(1e-13), NAN};
+#if defined(CASTELJAU_HAVE_OCCT)
+    result.agreement = std::abs(occt_plane_length(1e-13) - result.length) / result.length;
+#endif
+    return result;
+  }();
+  return o;
+}
 
 const Oracle& oracle() {
   static const Oracle o = [] {
@@ -84,8 +155,7 @@ std::string relative_text(double value) {
   return text;
 }
 
-void run_row(benchmark::State& state, double (*length)(double)) {
-  const Oracle& reference = oracle();
+void run_row(benchmark::State& state, double (*length)(double), const Oracle& reference) {
   double value = NAN;
   for (auto _ : state) {
     value = length(kRelativeAccuracy);
@@ -109,17 +179,24 @@ void run_row(benchmark::State& state, double (*length)(double)) {
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  auto add = [](const char* name, double (*length)(double)) {
-    benchmark::RegisterBenchmark((std::string("W9/arc-length/") + name).c_str(),
-                                 [length](benchmark::State& state) { run_row(state, length); })
+  auto add = [](const char* variant, const char* name, double (*length)(double), const Oracle& (*reference)()) {
+    benchmark::RegisterBenchmark((std::string("W9/") + variant + "/" + name).c_str(),
+                                 [length, reference](benchmark::State& state) { run_row(state, length, reference()); })
         ->Unit(benchmark::kMillisecond);
   };
-  add("casteljau", &casteljau_length);
+  add("arc-length", "casteljau", &casteljau_length, &oracle);
 #if defined(CASTELJAU_HAVE_OCCT)
-  add("occt-abscissa", &occt_length);
+  add("arc-length", "occt-abscissa", &occt_length, &oracle);
 #endif
 #if defined(CASTELJAU_HAVE_SISL)
-  add("sisl-s1240", &sisl_length);
+  add("arc-length", "sisl-s1240", &sisl_length, &oracle);
+#endif
+  add("arc-length-xy", "casteljau", &casteljau_plane_length, &plane_oracle);
+#if defined(CASTELJAU_HAVE_OCCT)
+  add("arc-length-xy", "occt-abscissa", &occt_plane_length, &plane_oracle);
+#endif
+#if defined(CASTELJAU_HAVE_RUST_PEERS)
+  add("arc-length-xy", "kurbo", &kurbo_plane_length, &plane_oracle);
 #endif
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
