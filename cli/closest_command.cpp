@@ -1,7 +1,8 @@
 // casteljau closest: for each query point (--point, repeated, then the rows
 // of --points FILE.csv), the nearest point of the curve of MODEL, as CSV
 // query,t,distance,x,y[,z]; with --all every local minimum of the distance,
-// the global one first (docs/cli.md, "closest"). The output is built in
+// the global one first; of a surface, query,u,v,distance,x,y,z (point
+// inversion) (docs/cli.md, "closest"). The output is built in
 // memory and written once every query is answered.
 #include <fmt/format.h>
 
@@ -13,6 +14,7 @@
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/ops/closest_point.hpp"
+#include "casteljau/ops/point_inversion.hpp"
 #include "commands.hpp"
 
 namespace casteljau::cli {
@@ -32,6 +34,25 @@ void append_row(std::string& out, std::size_t query, const NearestPoint& nearest
   std::vector<double> row{static_cast<double>(query), nearest.parameter, nearest.distance};
   row.insert(row.end(), nearest.point.begin(), nearest.point.end());
   append_points_csv(out, row, static_cast<int>(row.size()));
+}
+
+/// A surface: point inversion, CSV query,u,v,distance,x,y,z (--all is the
+/// curves' only).
+int run_surface(SurfaceView surface, const std::string& name, const std::vector<double>& queries, std::size_t dimension,
+                const std::string& output) {
+  if (dimension != static_cast<std::size_t>(surface.dimension()))
+    return fail(fmt::format("the query points have {} coordinates, {} lives in R^{}", dimension, name, surface.dimension()));
+  std::string out = "query,u,v,distance";
+  for (std::size_t j = 0; j < dimension; ++j) out += j < 3 ? std::string(",") + "xyz"[j] : fmt::format(",x{}", j);
+  out += '\n';
+  for (std::size_t i = 0; i * dimension < queries.size(); ++i) {
+    auto nearest = closest_point(surface, std::span<const double>(queries).subspan(i * dimension, dimension));
+    if (!nearest) return fail(with_context(nearest.error(), fmt::format("query {}", i)));
+    std::vector<double> row{static_cast<double>(i), nearest->u, nearest->v, nearest->distance};
+    row.insert(row.end(), nearest->point.begin(), nearest->point.end());
+    append_points_csv(out, row, static_cast<int>(row.size()));
+  }
+  return write_output(output, out);
 }
 
 int run_closest(const ClosestOptions& options) {
@@ -63,9 +84,9 @@ int run_closest(const ClosestOptions& options) {
     return fail(fmt::format("closest takes one curve; '{}' holds {} models", options.model, models->size()));
   const Model& model = models->front();
   const std::string name = model_name(*models, 0, options.model);
-  if (is_surface(model))
-    return fail(fmt::format("closest takes a curve; {} is a surface (point inversion on surfaces is not built yet)",
-                            name));
+  if (is_surface(model) && options.all)
+    return fail(fmt::format("--all (every local minimum) is for curves; {} is a surface", name));
+  if (is_surface(model)) return run_surface(surface_view(model), name, queries, dimension, options.output);
   const CurveView curve = curve_view(model);
   if (dimension != static_cast<std::size_t>(curve.dimension()))
     return fail(fmt::format("the query points have {} coordinates, {} lives in R^{}", dimension, name,
@@ -100,10 +121,10 @@ void add_closest_command(CLI::App& app, int& status) {
       "closest",
       "For each query point, the nearest point of the curve in MODEL, as CSV query,t,distance,x,y[,z]: the global "
       "minimum of the distance over the whole domain, end points and knots included; with --all every local "
-      "minimum, the global one first. Queries: each --point, then the rows of --points, numbered from 0 "
-      "(docs/curves.md).");
+      "minimum, the global one first. On a surface, point inversion: query,u,v,distance,x,y,z. Queries: each "
+      "--point, then the rows of --points, numbered from 0 (docs/curves.md).");
   CLI::Option* model =
-      closest->add_option("MODEL", options->model, "Model JSON with one curve, or a CSV point set taken as one Bézier curve")
+      closest->add_option("MODEL", options->model, "Model JSON with one curve or surface, or a CSV point set taken as one Bézier curve")
           ->required();
   closest->add_option("--point", options->points, "A query point X,Y[,Z] (repeatable)")->type_name("X,Y[,Z]");
   options->points_file_option =

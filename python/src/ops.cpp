@@ -27,6 +27,7 @@
 #include "casteljau/ops/intersection.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/ops/mesh.hpp"
+#include "casteljau/ops/point_inversion.hpp"
 #include "casteljau/ops/tessellate.hpp"
 #include "casteljau/surfaces/surface_view.hpp"
 
@@ -347,6 +348,22 @@ void bind_ops(py::module_& module) {
         py::arg("curve"), py::arg("count"), py::arg("tolerance") = py::none(),
         "count parameters, the ends of the domain included, whose points are equally spaced along the curve "
         "(each length within the tolerance), as a (count,) array: points_at(curve, these) resamples it.");
+  });
+
+  // --- point inversion (ops/point_inversion.hpp), every surface kind -------------
+  for_curve_kinds<BSplineSurface, BezierSurface, CoonsPatch>([&module](auto kind) {
+    using Kind = typename decltype(kind)::type;
+    module.def(
+        "closest_point",
+        [](const Kind& surface, const py::object& point) {
+          const std::vector<double> query = values_from(point, "point");
+          const SurfaceNearestPoint nearest = unwrap(closest_point(SurfaceView(surface), query));
+          return py::make_tuple(nearest.u, nearest.v, nearest.distance, to_numpy(nearest.point));
+        },
+        py::arg("surface"), py::arg("point"),
+        "Point inversion: the point of the surface nearest to `point` (d,), as (u, v, distance, point (d,)): Newton "
+        "from the samples of a grid along the knot lines that may be nearest, borders, poles and seams included "
+        "(ops/point_inversion.hpp). ValueError for a point of another dimension or not finite.");
   });
 
   // --- intersections (ops/intersection.hpp), any pair of curve kinds ------------

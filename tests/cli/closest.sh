@@ -3,7 +3,8 @@
 # circle of radius 3 about the origin: along the ray through the query; a
 # segment's orthogonal projection; the end when the foot falls beyond it),
 # --points files and repeated --point, --all with the ends and corners, a
-# 3D curve, and bad input: exit 2, one line on stderr, nothing on stdout.
+# 3D curve, point inversion on a surface, and bad input: exit 2, one line on
+# stderr, nothing on stdout.
 # Usage: bash closest.sh CASTELJAU EXAMPLES_DIR
 source "$(dirname "$0")/support/common.sh" "$@"
 
@@ -43,7 +44,19 @@ expect_error "mixed dimensions" "--point 1,2,3 has 3 coordinates, the first quer
 expect_error "not a number" "--point: 'a' is not a number" closest "$work/segment.json" --point a,1
 printf '1,2\n1,nan\n' >"$work/bad.csv"
 expect_error "a bad row" "bad.csv" closest "$work/segment.json" --points "$work/bad.csv"
-expect_error "a surface" "closest takes a curve; the bezier_surface model in" closest "$examples/patch.json" --point 0,0,0
+# Point inversion on the NURBS sphere of radius 1: along the ray, the pole from above.
+out=$("$casteljau" closest "$examples/sphere.json" --point 0,0,5 --point 3,4,0 2>&1)
+/usr/bin/python3 - "$out" <<'PY' || { echo "FAIL: sphere: $out"; failures=$((failures + 1)); }
+import sys
+lines = sys.argv[1].splitlines()
+rows = [tuple(map(float, line.split(","))) for line in lines[1:]]
+ok = lines[0] == "query,u,v,distance,x,y,z" and len(rows) == 2
+ok = ok and abs(rows[0][3] - 4) < 1e-12 and max(abs(a - b) for a, b in zip(rows[0][4:], (0, 0, 1))) < 1e-12
+ok = ok and abs(rows[1][3] - 4) < 1e-12 and max(abs(a - b) for a, b in zip(rows[1][4:], (0.6, 0.8, 0))) < 1e-12
+sys.exit(not ok)
+PY
+expect_error "--all on a surface" "--all (every local minimum) is for curves; the bspline_surface model in" \
+  closest "$examples/sphere.json" --point 0,0,5 --all
 model two.json '{"models": [{"type": "bezier", "control_points": [[0,0],[3,4]]}, {"type": "bezier", "control_points": [[0,0],[1,0]]}]}'
 expect_error "two models" "closest takes one curve; '$work/two.json' holds 2 models" closest "$work/two.json" --point 0,0
 expect_error "missing file" "nothing.json" closest "$work/nothing.json" --point 0,0

@@ -74,3 +74,14 @@ def test_errors():
         cj.closest_point(curve, [1, float("nan")])
     with pytest.raises(ValueError, match="points has 3 columns, the curve lives in R\\^2"):
         cj.closest_points(curve, [[1, 2, 3]])
+
+
+def test_point_inversion_on_the_sphere():
+    sphere = cj.make_sphere((0.0, 0.0, 0.0), 2.0)
+    rng = np.random.default_rng(7)
+    for q in rng.uniform(-5, 5, size=(200, 3)):
+        u, v, d, p = cj.closest_point(sphere, q)
+        assert d == pytest.approx(abs(np.linalg.norm(q) - 2.0), abs=1e-12)
+        assert np.allclose(cj.point_at(sphere, u, v), p, atol=1e-14)
+    with pytest.raises(ValueError, match="the surface lives in R\\^3"):
+        cj.closest_point(sphere, [1.0, 2.0])
