@@ -423,7 +423,9 @@ std::span<const GallerySection> gallery_sections() {
       {30, 34,
        "surfaces: a bicubic Bézier patch, Coons patches with both blendings, B-spline surface local control, the NURBS "
        "sphere and torus, a tessellation at two tolerances"},
-      {35, 35, "questions asked of a curve: equal-parameter against equal-arc-length samples on the head"},
+      {35, 38,
+       "questions asked of a curve: equal-parameter against equal-arc-length samples on the head, curvature combs "
+       "of the car's C¹ and C² interpolants, the head's closest-point field, intersections with their kinds"},
   };
   return kSections;
 }

@@ -32,6 +32,13 @@
 #include "casteljau/interpolation/spline_interpolation.hpp"
 #include "casteljau/io/csv.hpp"
 #include "casteljau/ops/arc_length.hpp"
+#include "casteljau/ops/bounds.hpp"
+#include "casteljau/ops/closest_point.hpp"
+#include "casteljau/ops/inflections.hpp"
+#include "casteljau/ops/intersection.hpp"
+#include "casteljau/curves/differential_geometry.hpp"
+#include "casteljau/bspline/transform.hpp"
+#include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/render/bspline_plots.hpp"
 #include "casteljau/render/plots.hpp"
 
@@ -219,6 +226,194 @@ Expected<GalleryFigure> arc_length_samples_figure(const PointArray& data) {
                   "each length within 1e-12 of the size: ops/arc_length.hpp), the spacing a CNC feed or a dashed line "
                   "needs. Measured: longest / shortest chord {:.2f} against {:.3f}.",
                   curve->size(), *length, chord_spread(*curve, uniform), chord_spread(*curve, *spaced)),
+      std::move(figure)};
+}
+
+// --- curvature combs, closest points, intersections -------------------------------------
+
+/// The largest jump of the signed curvature where consecutive pieces meet.
+double largest_curvature_jump(CurveView curve) {
+  const BezierPieces pieces = to_bezier_pieces(curve);
+  double worst = 0.0;
+  for (std::size_t k = 0; k + 1 < pieces.pieces.size(); ++k)
+    worst = std::max(worst, std::abs(signed_curvature_at(pieces.pieces[k], 1.0) -
+                                     signed_curvature_at(pieces.pieces[k + 1], 0.0)));
+  return worst;
+}
+
+/// The inflections of a plane curve as markers.
+Status add_inflections(Panel& panel, CurveView curve) {
+  auto inflections = inflection_parameters(curve);
+  if (!inflections) return inflections.error();
+  std::vector<Vec2> points;
+  for (const double u : *inflections) {
+    const Point p = point_at(curve, u);
+    points.push_back(Vec2{{p[0], p[1]}});
+  }
+  if (!points.empty())
+    panel.markers.push_back({std::move(points), cycle_color(3), 7.0 * kPixelsPerPoint, label_once(panel, "inflections")});
+  return {};
+}
+
+Expected<GalleryFigure> car_curvature_combs_figure(const PointArray& car) {
+  auto c1 = interpolate_c1_bezier(car, 1.0);
+  if (!c1) return c1.error();
+  auto chord = parameter_values(car, Parameterization::chord_length);
+  if (!chord) return chord.error();
+  auto c2 = interpolate_cubic(car, *chord, CubicEnds{EndCondition::natural, {}, {}});
+  if (!c2) return c2.error();
+  const double size = std::max(size_of(*c1), size_of(*c2));
+  Figure figure = figure_of("Curvature combs of the car's C¹ Bézier and C² cubic interpolants", 1500, 700, 2);
+  const double jump1 = largest_curvature_jump(*c1), jump2 = largest_curvature_jump(*c2);
+  // One scale for both combs, the C² curve's largest curvature a tooth of 8 % of the size.
+  double reference = 0.0;
+  for (int i = 0; i <= 2000; ++i)
+    reference = std::max(reference, std::abs(signed_curvature_at(*c2, c2->domain().lerp(i / 2000.0))));
+  for (int k = 0; k < 2; ++k) {
+    Panel panel;
+    panel.equal_aspect = true;
+    if (k == 0) {
+      panel.title = fmt::format("C¹ Bézier (α = 1): curvature jumps up to {:.3g} at the joints", jump1);
+      add_pieces(panel, *c1, false, colors::black, "C¹ curve");
+      add_curvature_comb(panel, *c1, 0.08 * size, 24, cycle_color(0), reference);
+      if (auto ok = add_inflections(panel, *c1); !ok) return ok.error();
+    } else {
+      panel.title = fmt::format("C² natural cubic, chord length: largest jump {:.1g}", jump2);
+      if (auto ok = add_bspline(panel, *c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
+      add_curvature_comb(panel, *c2, 0.08 * size, 24, cycle_color(0), reference);
+      if (auto ok = add_inflections(panel, *c2); !ok) return ok.error();
+    }
+    add_data_points(panel, car);
+    figure.panels.push_back(std::move(panel));
+  }
+  return GalleryFigure{
+      "36_car_curvature_combs",
+      fmt::format("Curvature combs (teeth along the normal, outside each bend, one scale for both, teeth cut at twice "
+                  "the C² curve's longest) of the car's two "
+                  "interpolants, inflections marked (ops/inflections.hpp). The C¹ Bézier curve of seed 000 matches "
+                  "tangents at the data points but not curvatures: its comb breaks at every joint (largest jump "
+                  "{:.3g}); the C² cubic's comb runs on unbroken (largest jump {:.1g}, rounding).",
+                  jump1, jump2),
+      std::move(figure)};
+}
+
+Expected<GalleryFigure> closest_point_field_figure(const PointArray& head) {
+  auto curve = interpolate_c1_bezier(head, 2.0);
+  if (!curve) return curve.error();
+  const Box box = bounding_box(*curve);
+  const double width = box.upper[0] - box.lower[0], height = box.upper[1] - box.lower[1];
+  constexpr int kColumns = 24, kRows = 20;
+  std::vector<double> queries;
+  for (int i = 0; i < kRows; ++i)
+    for (int j = 0; j < kColumns; ++j) {
+      queries.push_back(box.lower[0] - 0.2 * width + 1.4 * width * j / (kColumns - 1));
+      queries.push_back(box.lower[1] - 0.2 * height + 1.4 * height * i / (kRows - 1));
+    }
+  const std::size_t count = queries.size() / 2;
+  std::vector<double> parameters(count), distances(count);
+  if (auto ok = closest_points(*curve, queries, parameters, distances); !ok) return ok.error();
+  Panel panel;
+  panel.equal_aspect = true;
+  panel.title = fmt::format("{} query points and their nearest points on the head's C¹ curve", count);
+  SegmentItem feet{{}, solid(cycle_color(0), 0.8), false, "query to nearest point"};
+  std::vector<Vec2> ends, points;
+  int at_ends = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Point p = point_at(*curve, parameters[i]);
+    const Vec2 q{{queries[2 * i], queries[2 * i + 1]}};
+    feet.segments.push_back({q, Vec2{{p[0], p[1]}}});
+    points.push_back(q);
+    if (parameters[i] == curve->domain().lower || parameters[i] == curve->domain().upper) {
+      ends.push_back(Vec2{{p[0], p[1]}});
+      ++at_ends;
+    }
+  }
+  panel.segments.push_back(std::move(feet));
+  add_pieces(panel, *curve, false, colors::black, "C¹ curve, α = 2");
+  panel.markers.push_back({std::move(points), colors::gray, 2.5 * kPixelsPerPoint, "queries"});
+  if (!ends.empty()) panel.markers.push_back({std::move(ends), cycle_color(3), 6.0 * kPixelsPerPoint, "nearest at an end"});
+  Figure figure = figure_of("Closest points on the head's C¹ curve", 900, 900, 1);
+  figure.panels.push_back(std::move(panel));
+  return GalleryFigure{
+      "37_head_closest_point_field",
+      fmt::format("The closest-point field of the head's C¹ Bézier curve: from each point of a {} × {} grid over its "
+                  "box (grown by a fifth on every side), the segment to its nearest point (closest_points: branch and "
+                  "bound on the Bernstein coefficients of the squared distance, ops/closest_point.hpp). Segments meet "
+                  "the curve at right angles except at its two ends, where {} of the queries land; where two "
+                  "branches are equally near (the medial axis) neighbouring segments part.",
+                  kColumns, kRows, at_ends),
+      std::move(figure)};
+}
+
+Expected<GalleryFigure> intersections_figure(const PointArray& car) {
+  auto c1 = interpolate_c1_bezier(car, 1.0);
+  if (!c1) return c1.error();
+  auto chord = parameter_values(car, Parameterization::chord_length);
+  if (!chord) return chord.error();
+  auto c2 = interpolate_cubic(car, *chord, CubicEnds{EndCondition::natural, {}, {}});
+  if (!c2) return c2.error();
+  // The second panel: a stretch of the C² curve (an overlap) and the tangent line at one of its points (a tangency).
+  const Interval domain = c2->domain();
+  auto stretch = segment(*c2, domain.lerp(0.15), domain.lerp(0.35));
+  if (!stretch) return stretch.error();
+  const double at = domain.lerp(0.6);
+  const Point p = point_at(*c2, at), tangent = unit_tangent_at(*c2, at);
+  const double reach = 0.15 * size_of(*c2);
+  auto line = BezierCurve::make(
+      PointArray::make(2, {p[0] - reach * tangent[0], p[1] - reach * tangent[1], p[0] + reach * tangent[0],
+                           p[1] + reach * tangent[1]})
+          .value());
+  if (!line) return line.error();
+  Figure figure = figure_of("Intersections of the car's interpolants, each with its kind", 1500, 700, 2);
+  int counts[3] = {0, 0, 0};
+  const auto mark = [&](Panel& panel, CurveView a, CurveView b) -> Status {
+    auto found = intersections(a, b, default_intersection_tolerance(a, b));
+    if (!found) return found.error();
+    std::vector<Vec2> transversal, tangent_points;
+    for (const CurveIntersection& x : *found) {
+      ++counts[static_cast<int>(x.kind)];
+      if (x.kind == IntersectionKind::overlap) {
+        std::vector<Vec2> arc;
+        for (int i = 0; i <= 64; ++i) {
+          const Point q = point_at(a, x.a.lerp(i / 64.0));
+          arc.push_back(Vec2{{q[0], q[1]}});
+        }
+        panel.polylines.push_back({std::move(arc), solid(cycle_color(2), 6.0), label_once(panel, "overlap")});
+        continue;
+      }
+      (x.kind == IntersectionKind::transversal ? transversal : tangent_points).push_back(Vec2{{x.point[0], x.point[1]}});
+    }
+    if (!transversal.empty())
+      panel.markers.push_back({std::move(transversal), cycle_color(0), 7.0 * kPixelsPerPoint, label_once(panel, "transversal")});
+    if (!tangent_points.empty())
+      panel.markers.push_back({std::move(tangent_points), cycle_color(3), 9.0 * kPixelsPerPoint,
+                               label_once(panel, "tangent"), MarkerShape::diamond});
+    return {};
+  };
+  Panel both;
+  both.equal_aspect = true;
+  both.title = "C¹ Bézier (gray) against C² cubic (black)";
+  add_pieces(both, *c1, false, colors::gray, "C¹ curve");
+  if (auto ok = add_bspline(both, *c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
+  if (auto ok = mark(both, *c1, *c2); !ok) return ok.error();
+  const int first_panel_points = counts[0] + counts[1];
+  Panel shared;
+  shared.equal_aspect = true;
+  shared.title = "C² cubic against a stretch of itself and a tangent line";
+  if (auto ok = add_bspline(shared, *c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
+  add_bezier(shared, *line, BezierPlotOptions{}, cycle_color(1), "tangent line");
+  if (auto ok = mark(shared, *c2, *stretch); !ok) return ok.error();
+  if (auto ok = mark(shared, *c2, *line); !ok) return ok.error();
+  figure.panels.push_back(std::move(both));
+  figure.panels.push_back(std::move(shared));
+  return GalleryFigure{
+      "38_car_intersections",
+      fmt::format("intersections (ops/intersection.hpp: the lower-degree piece implicitized, the roots of the "
+                  "substituted polynomial with their multiplicities) of the car's C¹ and C² interpolants ({} points, "
+                  "at the data points and between them), and of the C² cubic with its own stretch u ∈ [15 %, 35 %] "
+                  "of the domain (an overlap) and with its tangent line at 60 % (a tangency). In all: {} transversal, "
+                  "{} tangent, {} overlap.",
+                  first_panel_points, counts[0], counts[1], counts[2]),
       std::move(figure)};
 }
 
@@ -610,7 +805,12 @@ Expected<std::vector<GalleryFigure>> query_gallery_figures(const std::filesystem
   auto head = read_plane_points(examples_dir, "head.csv");
   if (!head) return head.error();
   std::vector<GalleryFigure> figures;
+  auto car = read_plane_points(examples_dir, "car.csv");
+  if (!car) return car.error();
   if (auto ok = append_figure(figures, arc_length_samples_figure(*head)); !ok) return ok.error();
+  if (auto ok = append_figure(figures, car_curvature_combs_figure(*car)); !ok) return ok.error();
+  if (auto ok = append_figure(figures, closest_point_field_figure(*head)); !ok) return ok.error();
+  if (auto ok = append_figure(figures, intersections_figure(*car)); !ok) return ok.error();
   return figures;
 }
 

@@ -8,6 +8,7 @@
 #include <variant>
 
 #include "casteljau/bezier/construction.hpp"
+#include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/render/bspline_plots.hpp"
 #include "casteljau/render/layout.hpp"
@@ -60,35 +61,43 @@ std::array<double, 4> control_box(const BezierCurve& plane) {
   return {x0 - pad, y0 - pad, x1 + pad, y1 + pad};
 }
 
-void add_curvature_comb(Panel& panel, const BezierCurve& plane, double length, int teeth, Color color) {
+void add_curvature_comb(Panel& panel, CurveView plane, double length, int teeth, Color color, double reference_curvature) {
   teeth = std::max(teeth, 2);
   struct Sample {
     Vec2 point, normal;
     double kappa;
   };
-  std::vector<Sample> samples;
+  const BezierPieces pieces = to_bezier_pieces(plane);
+  std::vector<std::vector<Sample>> samples(pieces.pieces.size());
   double largest = 0.0;
-  for (int i = 0; i < teeth; ++i) {
-    const double t = static_cast<double>(i) / (teeth - 1);
-    const double kappa = signed_curvature_at(plane, t);
-    if (!std::isfinite(kappa)) continue;  // a cusp: no finite tooth
-    const Point tangent = unit_tangent_at(plane, t);
-    samples.push_back({plane_point(point_at(plane, t)), Vec2{{-tangent[1], tangent[0]}}, kappa});
-    largest = std::max(largest, std::abs(kappa));
+  for (std::size_t k = 0; k < pieces.pieces.size(); ++k) {
+    const BezierCurve& piece = pieces.pieces[k];
+    for (int i = 0; i < teeth; ++i) {
+      const double t = static_cast<double>(i) / (teeth - 1);
+      const double kappa = signed_curvature_at(piece, t);
+      if (!std::isfinite(kappa)) continue;  // a cusp: no finite tooth
+      const Point tangent = unit_tangent_at(piece, t);
+      samples[k].push_back({plane_point(point_at(piece, t)), Vec2{{-tangent[1], tangent[0]}}, kappa});
+      largest = std::max(largest, std::abs(kappa));
+    }
   }
-  if (samples.empty()) return;
-  const double scale = largest > 0.0 ? length / largest : 0.0;
+  const double reference = reference_curvature > 0.0 ? reference_curvature : largest;
+  const double scale = reference > 0.0 ? length / reference : 0.0;
   SegmentItem teeth_item{{}, solid(color, 0.8), false, once(panel, "curvature comb")};
-  PolylineItem tips{{}, solid(color, 1.0), ""};
-  for (const auto& s : samples) {
-    // Signed curvature > 0 turns left (centre on the left normal): the tooth
-    // points the other way, outside the bend.
-    const Vec2 tip = s.point - (scale * s.kappa) * s.normal;
-    teeth_item.segments.push_back({s.point, tip});
-    tips.points.push_back(tip);
+  for (const std::vector<Sample>& piece : samples) {
+    if (piece.empty()) continue;
+    PolylineItem tips{{}, solid(color, 1.0), ""};
+    for (const auto& s : piece) {
+      // Signed curvature > 0 turns left (centre on the left normal): the tooth
+      // points the other way, outside the bend.
+      const double tooth = std::clamp(scale * s.kappa, -2.0 * length, 2.0 * length);
+      const Vec2 tip = s.point - tooth * s.normal;
+      teeth_item.segments.push_back({s.point, tip});
+      tips.points.push_back(tip);
+    }
+    panel.polylines.push_back(std::move(tips));
   }
-  panel.segments.push_back(std::move(teeth_item));
-  panel.polylines.push_back(std::move(tips));
+  if (!teeth_item.segments.empty()) panel.segments.push_back(std::move(teeth_item));
 }
 
 void add_bezier(Panel& panel, const BezierCurve& plane, const BezierPlotOptions& options, Color color,

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "casteljau/bezier/bezier_curve.hpp"
+#include "casteljau/curves/curve_view.hpp"
 #include "casteljau/core/expected.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/render/figure.hpp"
@@ -34,13 +35,18 @@ std::string label_once(const Panel& panel, const std::string& text);
 void add_bezier(Panel& panel, const BezierCurve& plane, const BezierPlotOptions& options,
                 Color color = colors::black, const std::string& label = "");
 
-/// The curvature comb of a plane curve: `teeth` segments from C(t_i) to
-/// C(t_i) - s kappa(t_i) N(t_i) at evenly spaced t_i (N the left normal,
-/// kappa signed, so teeth stand on the outside of each bend), s chosen so the
-/// longest tooth is `length` model units, and the polyline through their
-/// tips. Cusps (infinite curvature) are skipped.
-void add_curvature_comb(Panel& panel, const BezierCurve& plane, double length, int teeth = 96,
-                        Color color = colors::gray);
+/// The curvature comb of a plane curve of any kind: on each Bézier piece
+/// `teeth` segments from C(t_i) to C(t_i) - s kappa(t_i) N(t_i) at evenly
+/// spaced t_i, both ends included (N the left normal, kappa signed, so teeth
+/// stand on the outside of each bend), one scale s for all pieces, chosen so
+/// the longest tooth is `length` model units, and per piece the polyline
+/// through their tips: where the curvature jumps at a joint (a C¹ curve),
+/// two teeth of different lengths stand there. Cusps (infinite curvature)
+/// are skipped. With `reference_curvature` > 0, s is length / reference
+/// instead (so that combs of different curves compare), and teeth longer
+/// than twice `length` are cut there.
+void add_curvature_comb(Panel& panel, CurveView plane, double length, int teeth = 96, Color color = colors::gray,
+                        double reference_curvature = 0.0);
 
 /// The graph t -> B_{n,k}(t) on [0,1] as a Bézier curve: control points
 /// (j/n, delta_jk), exact by linear precision. n >= 1, 0 <= k <= n. Figures
