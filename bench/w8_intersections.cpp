@@ -17,6 +17,8 @@
 // the peers report theirs. casteljau runs at a tolerance of 1e-12 of the
 // size: the near-tangent pairs' 2^-30 gap is 1e-9 of it, a contact at the
 // default tolerance; the peers run at their defaults (OpenCASCADE's 1e-6).
+// W8_DEBUG=1 in the environment prints every pair judged wrong, with the
+// oracle's points and the row's.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
