@@ -22,6 +22,15 @@ namespace {
 
 using detail::column;
 using detail::derivative;
+using tolerances::kIntersectionContactZone;
+using tolerances::kIntersectionConverged;
+using tolerances::kIntersectionJointSlack;
+using tolerances::kIntersectionLooseRoot;
+using tolerances::kIntersectionSameCrossing;
+using tolerances::kIntersectionSameTangency;
+using tolerances::kIntersectionSubdivisionWidth;
+using tolerances::kIntersectionTangentSine;
+using tolerances::kIntersectionZoneReach;
 
 /// A polynomial in Bernstein form and a bound of the terms that were summed
 /// to make it (the scale its rounding is relative to), coefficient by coefficient.
@@ -263,7 +272,8 @@ std::vector<CurveIntersection> merged(std::vector<CurveIntersection> points, std
   for (const CurveIntersection& o : overlaps) {
     if (!joined.empty()) {
       CurveIntersection& last = joined.back();
-      if (std::abs(o.a.lower - last.a.upper) <= 1e-9 * width_a && std::abs(o.b.lower - last.b.upper) <= 1e-9 * width_b) {
+      if (std::abs(o.a.lower - last.a.upper) <= kIntersectionJointSlack * width_a &&
+          std::abs(o.b.lower - last.b.upper) <= kIntersectionJointSlack * width_b) {
         last.a.upper = o.a.upper;
         last.b.upper = o.b.upper;
         continue;
@@ -276,7 +286,7 @@ std::vector<CurveIntersection> merged(std::vector<CurveIntersection> points, std
     // On the overlap's own diagonal: b where the overlap puts a's point (the
     // parameterizations of one curve by polynomial pieces of one degree are
     // affine in each other); a crossing at a double point lies off it.
-    const double slack_a = 1e-9 * width_a, slack_b = 1e-6 * width_b;
+    const double slack_a = kIntersectionJointSlack * width_a, slack_b = kIntersectionLooseRoot * width_b;
     if (p.a.lower < o.a.lower - slack_a || p.a.lower > o.a.upper + slack_a) return false;
     const double f = o.a.length() > 0.0 ? (p.a.lower - o.a.lower) / o.a.length() : 0.0;
     return std::abs(p.b.lower - (o.b.lower + f * (o.b.upper - o.b.lower))) <= slack_b;
@@ -286,11 +296,12 @@ std::vector<CurveIntersection> merged(std::vector<CurveIntersection> points, std
   std::vector<CurveIntersection> result;
   for (const CurveIntersection& p : points) {
     if (std::any_of(joined.begin(), joined.end(), [&](const CurveIntersection& o) { return inside(p, o); })) continue;
-    const double same_a = (p.kind == IntersectionKind::transversal ? 1e-12 : 1e-7) * width_a;
-    const double same_b = (p.kind == IntersectionKind::transversal ? 1e-12 : 1e-7) * width_b;
+    const double same = p.kind == IntersectionKind::transversal ? kIntersectionSameCrossing : kIntersectionSameTangency;
+    const double same_a = same * width_a, same_b = same * width_b;
     const auto duplicate = std::find_if(result.begin(), result.end(), [&](const CurveIntersection& q) {
-      return std::abs(q.a.lower - p.a.lower) <= std::max(same_a, 1e-9 * width_a * (q.kind != IntersectionKind::transversal)) &&
-             std::abs(q.b.lower - p.b.lower) <= std::max(same_b, 1e-9 * width_b * (q.kind != IntersectionKind::transversal));
+      const double joint = q.kind != IntersectionKind::transversal ? kIntersectionJointSlack : 0.0;
+      return std::abs(q.a.lower - p.a.lower) <= std::max(same_a, joint * width_a) &&
+             std::abs(q.b.lower - p.b.lower) <= std::max(same_b, joint * width_b);
     });
     if (duplicate != result.end()) {
       if (duplicate->kind == IntersectionKind::tangent && duplicate->multiplicity == 0) *duplicate = p;
@@ -374,7 +385,7 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
   constexpr std::size_t kMaxPairs = 200000;
   std::vector<Pair> stack{{span_a, span_b, part_a, part_b}};
   const double scale = std::max(size_of(a), size_of(b));
-  const double converged = 64 * 2.220446049250313e-16 * std::max(scale, tolerances::kScaleFloor);
+  const double converged = kIntersectionConverged * std::max(scale, tolerances::kScaleFloor);
   std::size_t visited = 0;
   const std::size_t first_new = found.size();
   std::vector<std::vector<std::pair<double, double>>> zones;  // the solutions of each new hit
@@ -383,7 +394,7 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
     stack.pop_back();
     if (!boxes_meet(pair.a, pair.b, tolerance)) continue;
     if (skip(pair.s, pair.t)) continue;
-    if (std::max(pair.s.length(), pair.t.length()) > 1e-6) {
+    if (std::max(pair.s.length(), pair.t.length()) > kIntersectionSubdivisionWidth) {
       const bool split_a = pair.s.length() >= pair.t.length();
       const auto halves = split_at(split_a ? pair.a : pair.b, 0.5).value();
       const Interval& span = split_a ? pair.s : pair.t;
@@ -402,21 +413,25 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
     const double gap = distance(point_at(a, s), point_at(b, t));
     if (gap > tolerance) continue;
     if (same_curve) {
-      if (std::abs(s - t) <= 1e-9) continue;
+      if (std::abs(s - t) <= kIntersectionJointSlack) continue;
       if (!(distance(point_at(a, s), point_at(a, 0.5 * (s + t))) > tolerance)) continue;
       if (s > t) std::swap(s, t);
     }
     const Point ds = derivative_at(a, s, 1), dt = derivative_at(b, t, 1);
     const double sine = std::abs(ds[0] * dt[1] - ds[1] * dt[0]) /
                         std::max(std::hypot(ds[0], ds[1]) * std::hypot(dt[0], dt[1]), tolerances::kScaleFloor);
-    const bool crossing = sine > 1e-6;
+    const bool crossing = sine > kIntersectionTangentSine;
     if (crossing && gap > converged) continue;
     // Crossings seen twice land within rounding; tangent solutions spread
     // over the contact zone, where the curves stay within the tolerance: one
     // tangency per zone.
     const auto seen = std::find_if(found.begin() + static_cast<std::ptrdiff_t>(first_new), found.end(), [&](const Hit& f) {
-      if (crossing) return f.kind == IntersectionKind::transversal && std::abs(f.s - s) <= 1e-12 && std::abs(f.t - t) <= 1e-12;
-      if (f.kind != IntersectionKind::tangent || std::abs(f.s - s) > 5e-2 || std::abs(f.t - t) > 5e-2) return false;
+      if (crossing)
+        return f.kind == IntersectionKind::transversal && std::abs(f.s - s) <= kIntersectionSameCrossing &&
+               std::abs(f.t - t) <= kIntersectionSameCrossing;
+      if (f.kind != IntersectionKind::tangent || std::abs(f.s - s) > kIntersectionZoneReach ||
+          std::abs(f.t - t) > kIntersectionZoneReach)
+        return false;
       return distance(point_at(a, 0.5 * (f.s + s)), point_at(b, 0.5 * (f.t + t))) <= tolerance;
     });
     if (seen != found.end()) {
@@ -454,8 +469,9 @@ void merge_tangent_zones(const BezierCurve& a, const BezierCurve& b, double tole
     bool joined = false;
     for (auto& zone : zones) {
       const bool near = std::any_of(zone.begin(), zone.end(), [&](const Hit& f) {
-        if (std::abs(f.s - hit.s) > 5e-2 || std::abs(f.t - hit.t) > 5e-2) return false;
-        if (std::abs(f.s - hit.s) <= 1e-3 && std::abs(f.t - hit.t) <= 1e-3) return true;
+        if (std::abs(f.s - hit.s) > kIntersectionZoneReach || std::abs(f.t - hit.t) > kIntersectionZoneReach) return false;
+        if (std::abs(f.s - hit.s) <= kIntersectionContactZone && std::abs(f.t - hit.t) <= kIntersectionContactZone)
+          return true;
         return distance(point_at(a, 0.5 * (f.s + hit.s)), point_at(b, 0.5 * (f.t + hit.t))) <= tolerance;
       });
       if (near) {
@@ -522,14 +538,15 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
     std::vector<Hit> crossings;
     const auto shared = [&](Interval si, Interval ti) {
       // Pairs along the shared stretch all meet: dropped once small, not at the start.
-      if (pairs.empty() || std::max(si.length(), ti.length()) > 1e-3) return false;
-      return along_segment(si, ti, pairs.front().s, pairs.front().t, pairs.back().s, pairs.back().t, 1e-6);
+      if (pairs.empty() || std::max(si.length(), ti.length()) > kIntersectionContactZone) return false;
+      return along_segment(si, ti, pairs.front().s, pairs.front().t, pairs.back().s, pairs.back().t,
+                           kIntersectionSubdivisionWidth);
     };
     subdivided_hits(implicit, {0.0, 1.0}, implicit, other, {0.0, 1.0}, other, false, tolerance, shared, crossings);
     for (const Hit& crossing : crossings) emit(crossing.s, crossing.t, crossing.kind, crossing.multiplicity);
     if (pairs.empty()) return hits;
     const Pair first = pairs.front(), last = pairs.back();
-    if (last.s - first.s > 1e-9) {
+    if (last.s - first.s > kIntersectionJointSlack) {
       Hit overlap = swap ? Hit{first.t, first.s, IntersectionKind::overlap, 0}
                          : Hit{first.s, first.t, IntersectionKind::overlap, 0};
       overlap.s_end = swap ? last.t : last.s;
@@ -544,15 +561,12 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
     }
     return hits;
   }
-  // How far a simple root's point may be from the implicitized piece before
-  // Newton: 1e-6 of the pieces' size.
-  constexpr double kLooseRoot = 1e-6;
   const double scale = std::max(size_of(implicit), size_of(other));
   // A zone of p may hide crossings closer than rounding lets p tell apart
   // (two crossings 1e-6 apart, the curves 1e-9 apart between them): Newton
   // on the pair from either side of the zone finds them when they are there
   // (emitted, true); a true tangency gives it nothing that converges.
-  const double converged = 64 * 2.220446049250313e-16 * std::max(scale, tolerances::kScaleFloor);
+  const double converged = kIntersectionConverged * std::max(scale, tolerances::kScaleFloor);
   const auto split_zone = [&](double s, double t, int multiplicity) {
     if (multiplicity != 2) return false;
     std::vector<std::pair<double, double>> crossings;
@@ -564,7 +578,7 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
       if (std::abs(tc - t) > 1e-4 || std::abs(sc - s) > 1e-4) continue;  // another intersection's
       const bool seen = std::any_of(crossings.begin(), crossings.end(), [&](const std::pair<double, double>& c) {
         // Newton lands within about 1e-11 of a crossing this close to a tangency.
-        return std::abs(c.first - sc) <= 1e-9 && std::abs(c.second - tc) <= 1e-9;
+        return std::abs(c.first - sc) <= kIntersectionJointSlack && std::abs(c.second - tc) <= kIntersectionJointSlack;
       });
       if (!seen) crossings.emplace_back(sc, tc);
     }
@@ -587,7 +601,7 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
     // point may miss the piece by more than the tolerance where the contact
     // is at the piece's end (the zone's middle slid past it). Such a foot is
     // brought to the nearest pair of points by alternate projections.
-    const double loose = std::max(tolerance, kLooseRoot * scale);
+    const double loose = std::max(tolerance, kIntersectionLooseRoot * scale);
     std::vector<double> branches;
     for (const NearestPoint& foot : feet) {
       if (foot.distance <= tolerance) {
@@ -618,7 +632,7 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
         const Point ta = derivative_at(implicit, s, 1), tb = derivative_at(other, t, 1);
         const double sine = std::abs(ta[0] * tb[1] - ta[1] * tb[0]) /
                             std::max(std::hypot(ta[0], ta[1]) * std::hypot(tb[0], tb[1]), tolerances::kScaleFloor);
-        if (multiplicity == 1 || sine > 1e-6) {
+        if (multiplicity == 1 || sine > kIntersectionTangentSine) {
           refine(implicit, other, s, t);
           emit(s, t, IntersectionKind::transversal, 1);
           continue;

@@ -54,6 +54,45 @@ inline constexpr double kDefaultArcLengthRelativeTolerance = 1e-12;
 /// that pass farther apart than a billionth of their size.
 inline constexpr double kDefaultIntersectionRelativeTolerance = 1e-9;
 
+// --- Intersections (ops/intersection) ----------------------------------------
+// Parameters are on [0, 1] per piece, or fractions of a curve's domain width.
+
+/// A Newton solution of A(s) = B(t) is a crossing when its two points are
+/// within this fraction of the pieces' size (64 ulps): rounding alone, not a
+/// near miss; near a tangency the points come that close only at the contact.
+inline constexpr double kIntersectionConverged = 64.0 * 2.220446049250313e-16;
+
+/// The sine of the angle between the two tangents below which a meeting is a
+/// tangency, not a crossing, where the implicit equation cannot tell (two
+/// parts of one algebraic curve, a branch of its double point). A crossing at
+/// a smaller angle than 1e-6 rad is found as a tangency of multiplicity 2.
+inline constexpr double kIntersectionTangentSine = 1e-6;
+
+/// How far (a fraction of the pieces' size) the point of a simple root of the
+/// implicit equation may be from the implicitized piece before Newton on the
+/// pair: the root of a degree-36 resultant is known to about 1e-8 of a piece.
+inline constexpr double kIntersectionLooseRoot = 1e-6;
+
+/// Two crossings whose parameters differ by less than this (of the domain)
+/// are one, seen from two pieces or two starts; tangencies, known to about the
+/// square root of the rounding, are one within kIntersectionSameTangency.
+inline constexpr double kIntersectionSameCrossing = 1e-12;
+inline constexpr double kIntersectionSameTangency = 1e-7;
+
+/// Parameters of joints and of the ends of overlaps agree within this
+/// fraction of the domain (an end point of one piece found on another).
+inline constexpr double kIntersectionJointSlack = 1e-9;
+
+/// Tangent solutions within this of each other in both parameters are one
+/// contact zone (zones are about sqrt(tolerance / curvature) wide); farther
+/// than kIntersectionZoneReach they are two tangencies.
+inline constexpr double kIntersectionContactZone = 1e-3;
+inline constexpr double kIntersectionZoneReach = 5e-2;
+
+/// Subdivision of two pieces (for parts of one algebraic curve) stops at
+/// sub-curves this narrow in their parameter, where Newton takes over.
+inline constexpr double kIntersectionSubdivisionWidth = 1e-6;
+
 /// Largest number of quadrature intervals one arc-length computation may use
 /// (15 evaluations each). A curve that needs more at the requested accuracy
 /// (a tolerance tiny against a long, wildly varying curve) is refused rather
