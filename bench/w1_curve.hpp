@@ -1,6 +1,6 @@
 #pragma once
 // W1's curve (shared/docs/performance.md), shared by the workloads that use
-// it (W1/W2 evaluation, W7 closest point, W9 arc length): a cubic B-spline in
+// it (W1/W2 evaluation, W7 closest point, W9 arc length; W7 and W9 also on the xy plane): a cubic B-spline in
 // 3D with 1000 control points drawn uniformly in [0,100)^3 from a fixed
 // splitmix64 stream, on the clamped uniform knots of [0,1]; and the same
 // curve as the peers hold it (OpenCASCADE's Geom_BSplineCurve with its
@@ -41,6 +41,19 @@ inline std::vector<double> w1_control_points() {
 inline BSplineCurve w1_curve() {
   return BSplineCurve::from_trusted(kW1Degree, clamped_uniform_knots(kW1Degree, kW1ControlPoints),
                                     PointArray::from_trusted(3, w1_control_points()));
+}
+
+/// W1's curve with its z dropped: the plane B-spline (same degree and knots)
+/// that the plane-only workloads (W7 and W9 on the xy plane) measure.
+inline BSplineCurve w1_plane_curve() {
+  const std::vector<double> control = w1_control_points();
+  std::vector<double> xy;
+  for (std::size_t i = 0; i < kW1ControlPoints; ++i) {
+    xy.push_back(control[3 * i]);
+    xy.push_back(control[3 * i + 1]);
+  }
+  return BSplineCurve::from_trusted(kW1Degree, clamped_uniform_knots(kW1Degree, kW1ControlPoints),
+                                    PointArray::from_trusted(2, std::move(xy)));
 }
 
 #if defined(CASTELJAU_HAVE_OCCT)

@@ -86,18 +86,9 @@ const BSplineCurve& spatial() {
   static const BSplineCurve c = casteljau::bench::w1_curve();
   return c;
 }
-/// W1's curve with its z dropped.
+/// W1's curve on the xy plane (bench/w1_curve.hpp).
 const BSplineCurve& plane() {
-  static const BSplineCurve c = [] {
-    const BSplineCurve& w1 = spatial();
-    std::vector<double> xy;
-    for (std::size_t i = 0; i < w1.control_points().size(); ++i) {
-      xy.push_back(w1.control_points()[i][0]);
-      xy.push_back(w1.control_points()[i][1]);
-    }
-    return BSplineCurve::from_trusted(w1.degree(), std::vector<double>(w1.knots().begin(), w1.knots().end()),
-                                      casteljau::PointArray::from_trusted(2, std::move(xy)));
-  }();
+  static const BSplineCurve c = casteljau::bench::w1_plane_curve();
   return c;
 }
 

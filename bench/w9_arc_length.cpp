@@ -71,18 +71,9 @@ double sisl_length(double relative) {
 }
 #endif
 
-/// W1's curve with its z dropped: the plane curve the plane-only peers
-/// (kurbo) measure (rows W9/arc-length-xy/<impl>).
+/// W1's curve on the xy plane (bench/w1_curve.hpp).
 const BSplineCurve& plane() {
-  static const BSplineCurve c = [] {
-    std::vector<double> xy;
-    for (std::size_t i = 0; i < curve().control_points().size(); ++i) {
-      xy.push_back(curve().control_points()[i][0]);
-      xy.push_back(curve().control_points()[i][1]);
-    }
-    return BSplineCurve::from_trusted(curve().degree(), std::vector<double>(curve().knots().begin(), curve().knots().end()),
-                                      casteljau::PointArray::from_trusted(2, std::move(xy)));
-  }();
+  static const BSplineCurve c = casteljau::bench::w1_plane_curve();
   return c;
 }
 

@@ -355,17 +355,25 @@ void point_and_derivatives(const Prepared& prepared, std::size_t k, double t, do
   }
 }
 
+/// Room for C, C', C'' of one point: on the stack up to kStackDimension, else on the heap.
+class DerivativeScratch {
+ public:
+  explicit DerivativeScratch(int d) {
+    if (d > kStackDimension) heap_.resize(3 * static_cast<std::size_t>(d));
+  }
+  double* data() { return heap_.empty() ? stack_ : heap_.data(); }
+
+ private:
+  double stack_[3 * kStackDimension];
+  std::vector<double> heap_;
+};
+
 /// The candidate polished by Newton on f(t) = (C - q) . C' = 0 within [0, 1],
 /// each step kept only when it brings the point nearer. Writes C(t).
 double polish(const Prepared& prepared, std::size_t k, double t, const double* q, double* point, double& g) {
   const int d = prepared.dimension;
-  std::vector<double> storage;
-  double stack_storage[3 * kStackDimension];
-  double* c = stack_storage;
-  if (d > kStackDimension) {
-    storage.resize(3 * static_cast<std::size_t>(d));
-    c = storage.data();
-  }
+  DerivativeScratch scratch(d);
+  double* c = scratch.data();
   double* c1 = c + d;
   double* c2 = c1 + d;
   point_and_derivatives(prepared, k, t, c, c1, c2);
@@ -433,13 +441,8 @@ NearestPoint nearest(const Prepared& prepared, const double* q, Search& search, 
   if (warm) {
     // The previous answer bounds this one: |q - C(previous)|.
     first = piece;
-    std::vector<double> storage;
-    double stack_storage[3 * kStackDimension];
-    double* c = stack_storage;
-    if (d > kStackDimension) {
-      storage.resize(3 * static_cast<std::size_t>(d));
-      c = storage.data();
-    }
+    DerivativeScratch scratch(d);
+    double* c = scratch.data();
     point_and_derivatives(prepared, piece, local, c, c + d, c + 2 * d);
     search.consider(piece, local, squared_distance({c, static_cast<std::size_t>(d)}, q));
   } else {

@@ -255,33 +255,46 @@ Status add_inflections(Panel& panel, CurveView curve) {
   return {};
 }
 
-Expected<GalleryFigure> car_curvature_combs_figure(const PointArray& car) {
+/// The car's two interpolants that figures 36 and 38 compare: seed 000's C¹
+/// Bézier curve (α = 1) and the C² natural cubic on chord-length parameters.
+struct CarInterpolants {
+  PiecewiseBezierCurve c1;
+  BSplineCurve c2;
+};
+
+Expected<CarInterpolants> car_interpolants(const PointArray& car) {
   auto c1 = interpolate_c1_bezier(car, 1.0);
   if (!c1) return c1.error();
   auto chord = parameter_values(car, Parameterization::chord_length);
   if (!chord) return chord.error();
   auto c2 = interpolate_cubic(car, *chord, CubicEnds{EndCondition::natural, {}, {}});
   if (!c2) return c2.error();
-  const double size = std::max(size_of(*c1), size_of(*c2));
+  return CarInterpolants{std::move(*c1), std::move(*c2)};
+}
+
+Expected<GalleryFigure> car_curvature_combs_figure(const PointArray& car, const CarInterpolants& curves) {
+  const PiecewiseBezierCurve& c1 = curves.c1;
+  const BSplineCurve& c2 = curves.c2;
+  const double size = std::max(size_of(c1), size_of(c2));
   Figure figure = figure_of("Curvature combs of the car's C¹ Bézier and C² cubic interpolants", 1500, 700, 2);
-  const double jump1 = largest_curvature_jump(*c1), jump2 = largest_curvature_jump(*c2);
+  const double jump1 = largest_curvature_jump(c1), jump2 = largest_curvature_jump(c2);
   // One scale for both combs, the C² curve's largest curvature a tooth of 8 % of the size.
   double reference = 0.0;
   for (int i = 0; i <= 2000; ++i)
-    reference = std::max(reference, std::abs(signed_curvature_at(*c2, c2->domain().lerp(i / 2000.0))));
+    reference = std::max(reference, std::abs(signed_curvature_at(c2, c2.domain().lerp(i / 2000.0))));
   for (int k = 0; k < 2; ++k) {
     Panel panel;
     panel.equal_aspect = true;
     if (k == 0) {
       panel.title = fmt::format("C¹ Bézier (α = 1): curvature jumps up to {:.3g} at the joints", jump1);
-      add_pieces(panel, *c1, false, colors::black, "C¹ curve");
-      add_curvature_comb(panel, *c1, 0.08 * size, 24, cycle_color(0), reference);
-      if (auto ok = add_inflections(panel, *c1); !ok) return ok.error();
+      add_pieces(panel, c1, false, colors::black, "C¹ curve");
+      add_curvature_comb(panel, c1, 0.08 * size, 24, cycle_color(0), reference);
+      if (auto ok = add_inflections(panel, c1); !ok) return ok.error();
     } else {
       panel.title = fmt::format("C² natural cubic, chord length: largest jump {:.1g}", jump2);
-      if (auto ok = add_bspline(panel, *c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
-      add_curvature_comb(panel, *c2, 0.08 * size, 24, cycle_color(0), reference);
-      if (auto ok = add_inflections(panel, *c2); !ok) return ok.error();
+      if (auto ok = add_bspline(panel, c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
+      add_curvature_comb(panel, c2, 0.08 * size, 24, cycle_color(0), reference);
+      if (auto ok = add_inflections(panel, c2); !ok) return ok.error();
     }
     add_data_points(panel, car);
     figure.panels.push_back(std::move(panel));
@@ -345,20 +358,16 @@ Expected<GalleryFigure> closest_point_field_figure(const PointArray& head) {
       std::move(figure)};
 }
 
-Expected<GalleryFigure> intersections_figure(const PointArray& car) {
-  auto c1 = interpolate_c1_bezier(car, 1.0);
-  if (!c1) return c1.error();
-  auto chord = parameter_values(car, Parameterization::chord_length);
-  if (!chord) return chord.error();
-  auto c2 = interpolate_cubic(car, *chord, CubicEnds{EndCondition::natural, {}, {}});
-  if (!c2) return c2.error();
+Expected<GalleryFigure> intersections_figure(const CarInterpolants& curves) {
+  const PiecewiseBezierCurve& c1 = curves.c1;
+  const BSplineCurve& c2 = curves.c2;
   // The second panel: a stretch of the C² curve (an overlap) and the tangent line at one of its points (a tangency).
-  const Interval domain = c2->domain();
-  auto stretch = segment(*c2, domain.lerp(0.15), domain.lerp(0.35));
+  const Interval domain = c2.domain();
+  auto stretch = segment(c2, domain.lerp(0.15), domain.lerp(0.35));
   if (!stretch) return stretch.error();
   const double at = domain.lerp(0.6);
-  const Point p = point_at(*c2, at), tangent = unit_tangent_at(*c2, at);
-  const double reach = 0.15 * size_of(*c2);
+  const Point p = point_at(c2, at), tangent = unit_tangent_at(c2, at);
+  const double reach = 0.15 * size_of(c2);
   auto line = BezierCurve::make(
       PointArray::make(2, {p[0] - reach * tangent[0], p[1] - reach * tangent[1], p[0] + reach * tangent[0],
                            p[1] + reach * tangent[1]})
@@ -393,17 +402,17 @@ Expected<GalleryFigure> intersections_figure(const PointArray& car) {
   Panel both;
   both.equal_aspect = true;
   both.title = "C¹ Bézier (gray) against C² cubic (black)";
-  add_pieces(both, *c1, false, colors::gray, "C¹ curve");
-  if (auto ok = add_bspline(both, *c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
-  if (auto ok = mark(both, *c1, *c2); !ok) return ok.error();
+  add_pieces(both, c1, false, colors::gray, "C¹ curve");
+  if (auto ok = add_bspline(both, c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
+  if (auto ok = mark(both, c1, c2); !ok) return ok.error();
   const int first_panel_points = counts[0] + counts[1];
   Panel shared;
   shared.equal_aspect = true;
   shared.title = "C² cubic against a stretch of itself and a tangent line";
-  if (auto ok = add_bspline(shared, *c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
+  if (auto ok = add_bspline(shared, c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
   add_bezier(shared, *line, BezierPlotOptions{}, cycle_color(1), "tangent line");
-  if (auto ok = mark(shared, *c2, *stretch); !ok) return ok.error();
-  if (auto ok = mark(shared, *c2, *line); !ok) return ok.error();
+  if (auto ok = mark(shared, c2, *stretch); !ok) return ok.error();
+  if (auto ok = mark(shared, c2, *line); !ok) return ok.error();
   figure.panels.push_back(std::move(both));
   figure.panels.push_back(std::move(shared));
   return GalleryFigure{
@@ -808,9 +817,11 @@ Expected<std::vector<GalleryFigure>> query_gallery_figures(const std::filesystem
   auto car = read_plane_points(examples_dir, "car.csv");
   if (!car) return car.error();
   if (auto ok = append_figure(figures, arc_length_samples_figure(*head)); !ok) return ok.error();
-  if (auto ok = append_figure(figures, car_curvature_combs_figure(*car)); !ok) return ok.error();
+  auto curves = car_interpolants(*car);
+  if (!curves) return curves.error();
+  if (auto ok = append_figure(figures, car_curvature_combs_figure(*car, *curves)); !ok) return ok.error();
   if (auto ok = append_figure(figures, closest_point_field_figure(*head)); !ok) return ok.error();
-  if (auto ok = append_figure(figures, intersections_figure(*car)); !ok) return ok.error();
+  if (auto ok = append_figure(figures, intersections_figure(*curves)); !ok) return ok.error();
   return figures;
 }
 
