@@ -49,8 +49,9 @@ std::string json_of(const std::vector<CurveIntersection>& found) {
                          number(x.b.upper));
       continue;
     }
-    out += fmt::format("\"a\": {}, \"b\": {}, \"point\": [{}, {}]", number(x.a.lower), number(x.b.lower),
-                       number(x.point[0]), number(x.point[1]));
+    out += fmt::format("\"a\": {}, \"b\": {}, \"point\": [", number(x.a.lower), number(x.b.lower));
+    for (std::size_t j = 0; j < x.point.size(); ++j) out += (j == 0 ? "" : ", ") + number(x.point[j]);
+    out += "]";
     if (x.kind == IntersectionKind::tangent) out += fmt::format(", \"multiplicity\": {}", x.multiplicity);
     out += "}";
   }
@@ -88,11 +89,12 @@ void add_intersect_command(CLI::App& app, int& status) {
   auto options = std::make_shared<IntersectOptions>();
   CLI::App* intersect = app.add_subcommand(
       "intersect",
-      "The intersections of the plane curves A and B, or the self-intersections of A alone, as JSON "
+      "The intersections of the curves A and B (plane, or both in space), or the self-intersections of the plane "
+      "curve A alone, as JSON "
       "{\"intersections\": [...]} sorted by the parameter on A: each transversal, tangent (with its multiplicity) "
       "or overlap (the two parameter intervals) once, end points and knots included. Curves within --tolerance "
       "(default 1e-9 of the larger curve's size) count as meeting (docs/curves.md).");
-  CLI::Option* first = intersect->add_option("A", options->first, "Model JSON with one plane curve (or a CSV polygon)")->required();
+  CLI::Option* first = intersect->add_option("A", options->first, "Model JSON with one curve (or a CSV polygon)")->required();
   options->second_option = intersect->add_option("B", options->second, "The second curve (omit for self-intersections of A)");
   options->tolerance_option =
       intersect->add_option("--tolerance", options->tolerance, "Distance within which curves meet (default 1e-9 x size)")

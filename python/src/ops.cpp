@@ -23,6 +23,7 @@
 #include "casteljau/ops/arc_length.hpp"
 #include "casteljau/ops/bounds.hpp"
 #include "casteljau/ops/closest_point.hpp"
+#include "casteljau/ops/curvature_extrema.hpp"
 #include "casteljau/ops/inflections.hpp"
 #include "casteljau/ops/intersection.hpp"
 #include "casteljau/ops/flatten.hpp"
@@ -283,6 +284,35 @@ void bind_ops(py::module_& module) {
         "The parameters where a plane curve's signed curvature changes sign, increasing, as a (k,) array (roots of "
         "det[A, A', A''] per Bézier piece; flat points excluded). ValueError unless d == 2.");
     module.def(
+        "curvature_extrema",
+        [](const Kind& curve) {
+          const std::vector<CurvatureExtremum> found = unwrap(curvature_extrema(CurveView(curve)));
+          std::vector<double> parameters, curvatures;
+          py::array_t<bool> maxima(static_cast<py::ssize_t>(found.size()));
+          auto flags = maxima.mutable_unchecked<1>();
+          for (std::size_t i = 0; i < found.size(); ++i) {
+            parameters.push_back(found[i].parameter);
+            curvatures.push_back(found[i].curvature);
+            flags(static_cast<py::ssize_t>(i)) = found[i].maximum;
+          }
+          return py::make_tuple(to_numpy(std::span<const double>(parameters)),
+                                to_numpy(std::span<const double>(curvatures)), maxima);
+        },
+        py::arg("curve"),
+        "The local extrema of |curvature| inside the domain as (parameters (k,), curvatures (k,), maximum (k,) "
+        "bool): roots of the numerator of dkappa/dt per Bezier piece, junctions where the curvature is continuous "
+        "included, the ends, inflections and cusps not (ops/curvature_extrema.hpp). Curvatures are signed in the "
+        "plane. ValueError for a curve in R^1.");
+    module.def(
+        "cusp_parameters",
+        [](const Kind& curve) {
+          return to_numpy(std::span<const double>(unwrap(cusp_parameters(CurveView(curve)))));
+        },
+        py::arg("curve"),
+        "The parameters of the cusps inside the domain, increasing, as a (k,) array: where the velocity vanishes "
+        "and the tangent turns back, or where the tangents on the two sides of a junction are opposite "
+        "(ops/curvature_extrema.hpp). ValueError for a curve in R^1.");
+    module.def(
         "closest_point",
         [](const Kind& curve, const py::object& point) {
           const std::vector<double> query = values_from(point, "point");
@@ -375,10 +405,12 @@ void bind_ops(py::module_& module) {
         return intersection_list(unwrap(without_gil([&] { return intersections(first, second, accuracy); })));
       },
       py::arg("a"), py::arg("b"), py::arg("tolerance") = py::none(),
-      "The intersections of two plane curves of any kinds, sorted by the parameter on a, as a list of dicts: "
-      "{'kind': 'transversal'|'tangent', 'a', 'b', 'point' (2,), 'multiplicity'} for points, {'kind': 'overlap', "
+      "The intersections of two curves of any kinds (both plane, or both in space: there where they pass within "
+      "the tolerance), sorted by the parameter on a, as a list of dicts: "
+      "{'kind': 'transversal'|'tangent', 'a', 'b', 'point' (d,), 'multiplicity'} for points, {'kind': 'overlap', "
       "'a': (a0, a1), 'b': (b(a0), b(a1))} for shared stretches (ops/intersection.hpp). tolerance: the distance "
-      "within which the curves meet (default 1e-9 of the larger size). ValueError for curves not in the plane.");
+      "within which the curves meet (default 1e-9 of the larger size). ValueError for curves of two dimensions "
+      "or in R^1.");
   module.def(
       "self_intersections",
       [](const py::object& curve, const py::object& tolerance) {

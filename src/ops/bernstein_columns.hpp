@@ -1,7 +1,8 @@
 #pragma once
 // Internal to src/ops: a piece's coordinates as scalar polynomials in
 // Bernstein form, and their derivatives, for the questions that reduce to
-// roots of one polynomial (bounds.cpp, inflections.cpp).
+// roots of one polynomial (bounds.cpp, inflections.cpp, curvature_extrema.cpp).
+#include <cassert>
 #include <vector>
 
 #include "casteljau/core/point_array.hpp"
@@ -23,6 +24,22 @@ inline std::vector<double> derivative(const std::vector<double>& b) {
   std::vector<double> d(b.size() - 1);
   for (std::size_t i = 0; i + 1 < b.size(); ++i) d[i] = n * (b[i + 1] - b[i]);
   return d;
+}
+
+/// a - b, two polynomials of the same degree in Bernstein form.
+inline std::vector<double> difference(const std::vector<double>& a, const std::vector<double>& b) {
+  assert(a.size() == b.size());
+  std::vector<double> c(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) c[i] = a[i] - b[i];
+  return c;
+}
+
+/// a + b, two polynomials of the same degree in Bernstein form.
+inline std::vector<double> sum(const std::vector<double>& a, const std::vector<double>& b) {
+  assert(a.size() == b.size());
+  std::vector<double> c(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) c[i] = a[i] + b[i];
+  return c;
 }
 
 }  // namespace casteljau::detail

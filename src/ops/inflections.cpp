@@ -6,6 +6,7 @@
 
 #include "casteljau/bezier/bernstein_roots.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "bernstein_columns.hpp"
 
 namespace casteljau {
@@ -13,12 +14,7 @@ namespace {
 
 using detail::column;
 using detail::derivative;
-
-std::vector<double> difference(const std::vector<double>& a, const std::vector<double>& b) {
-  std::vector<double> c(a.size());
-  for (std::size_t i = 0; i < a.size(); ++i) c[i] = a[i] - b[i];
-  return c;
-}
+using detail::difference;
 
 /// det[A, A', A''] of one plane piece, expanded along the first row:
 /// x (y' w'' - w' y'') - y (x' w'' - w' x'') + w (x' y'' - y' x'').
@@ -50,7 +46,7 @@ Expected<std::vector<double>> inflection_parameters(CurveView curve) {
     const BezierCurve& piece = pieces.pieces[k];
     if (piece.degree() < 2) continue;  // a segment or a point: no curvature
     const Interval span{pieces.breakpoints[k], pieces.breakpoints[k + 1]};
-    for (const BernsteinRoot& root : bernstein_roots(determinant(piece), 1e-12)) {
+    for (const BernsteinRoot& root : bernstein_roots(determinant(piece), tolerances::kCurvatureRootResolution)) {
       if (root.multiplicity % 2 == 0) continue;  // a flat point, not an inflection
       const double u = span.lerp(root.t);
       if (!result.empty() && u <= result.back()) continue;  // a junction seen from both pieces

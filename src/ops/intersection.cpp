@@ -1,6 +1,7 @@
-// Intersections of plane curves (intersection.hpp): per pair of Bézier
+// Intersections of curves (intersection.hpp): in the plane: per pair of Bézier
 // pieces, the lower-degree piece implicitized (Bézout matrix), the other
 // substituted, the roots of the resulting polynomial inverted and refined.
+// In space: subdivision and Gauss-Newton on the nearest pair of points.
 #include "casteljau/ops/intersection.hpp"
 
 #include <algorithm>
@@ -22,6 +23,8 @@ namespace {
 
 using detail::column;
 using detail::derivative;
+using tolerances::kIntersectionContactCurvature;
+using tolerances::kIntersectionContactRate;
 using tolerances::kIntersectionContactZone;
 using tolerances::kIntersectionConverged;
 using tolerances::kIntersectionJointSlack;
@@ -136,20 +139,76 @@ struct Hit {
   double s_end = 0.0, t_end = 0.0;  // an overlap's other end
 };
 
-double distance(const Point& p, const Point& q) { return std::hypot(p[0] - q[0], p[1] - q[1]); }
+double distance(const Point& p, const Point& q) {
+  if (p.size() == 2) return std::hypot(p[0] - q[0], p[1] - q[1]);
+  double squared = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) squared += (p[i] - q[i]) * (p[i] - q[i]);
+  return std::sqrt(squared);
+}
 
-/// Newton on A(s) - B(t) = 0 from a simple root, kept inside [0, 1]^2, each
-/// step halved until the points come nearer (at most 16 steps).
-void refine(const BezierCurve& a, const BezierCurve& b, double& s, double& t) {
-  double gap = distance(point_at(a, s), point_at(b, t));
-  for (int iteration = 0; iteration < 16 && gap > 0.0; ++iteration) {
-    const std::vector<Point> da = derivatives_up_to(a, s, 1), db = derivatives_up_to(b, t, 1);
+double dot(const Point& p, const Point& q) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) sum += p[i] * q[i];
+  return sum;
+}
+
+/// |sin| of the angle between two tangents (0 when either vanishes).
+double tangent_sine(const Point& ta, const Point& tb) {
+  if (ta.size() == 2)
+    return std::abs(ta[0] * tb[1] - ta[1] * tb[0]) /
+           std::max(std::hypot(ta[0], ta[1]) * std::hypot(tb[0], tb[1]), tolerances::kScaleFloor);
+  // Lagrange's identity: |a x b|^2 = |a|^2 |b|^2 - (a . b)^2, in any dimension.
+  const double aa = dot(ta, ta), bb = dot(tb, tb), ab = dot(ta, tb);
+  return std::sqrt(std::max(0.0, aa * bb - ab * ab)) / std::max(std::sqrt(aa * bb), tolerances::kScaleFloor);
+}
+
+/// The step (ds, dt) from (s, t): in the plane Newton's on A(s) - B(t) = 0;
+/// in space Gauss-Newton's on |A(s) - B(t)|^2 (the normal equations of
+/// [A' -B'] (ds, dt) = B - A), towards the nearest pair of points. False
+/// where the Jacobian is singular.
+bool newton_step(const BezierCurve& a, const BezierCurve& b, double s, double t, double& ds, double& dt) {
+  const std::vector<Point> da = derivatives_up_to(a, s, 1), db = derivatives_up_to(b, t, 1);
+  if (a.dimension() == 2) {
     // [A' -B'] (ds, dt) = B - A.
     const double f0 = db[0][0] - da[0][0], f1 = db[0][1] - da[0][1];
     const double det = -da[1][0] * db[1][1] + db[1][0] * da[1][1];
-    if (det == 0.0) break;
-    const double ds = (-f0 * db[1][1] + db[1][0] * f1) / det;
-    const double dt = (da[1][0] * f1 - da[1][1] * f0) / det;
+    if (det == 0.0) return false;
+    ds = (-f0 * db[1][1] + db[1][0] * f1) / det;
+    dt = (da[1][0] * f1 - da[1][1] * f0) / det;
+    return true;
+  }
+  Point r(da[0].size());
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = db[0][i] - da[0][i];
+  const double aa = dot(da[1], da[1]), ab = -dot(da[1], db[1]), bb = dot(db[1], db[1]);
+  const double ra = dot(da[1], r), rb = -dot(db[1], r);
+  const double det = aa * bb - ab * ab;
+  if (!(det > 0.0)) return false;
+  ds = (ra * bb - ab * rb) / det;
+  dt = (aa * rb - ab * ra) / det;
+  return true;
+}
+
+/// Whether (s, t) is where Newton (Gauss-Newton in space) has converged: its
+/// next step is below kIntersectionSameCrossing. In space, the nearest pair
+/// of two branches passing each other; a point of a contact zone, or near a
+/// cusp, is not one.
+bool converged_pair(const BezierCurve& a, const BezierCurve& b, double s, double t) {
+  double ds = 0.0, dt = 0.0;
+  if (!newton_step(a, b, s, t, ds, dt)) return false;
+  // At an end of a piece the nearest pair may lie beyond it: no step out.
+  if ((s == 0.0 && ds < 0.0) || (s == 1.0 && ds > 0.0)) ds = 0.0;
+  if ((t == 0.0 && dt < 0.0) || (t == 1.0 && dt > 0.0)) dt = 0.0;
+  return std::abs(ds) <= kIntersectionSameCrossing && std::abs(dt) <= kIntersectionSameCrossing;
+}
+
+/// From (s, t) near an intersection, kept inside [0, 1]^2, newton_step
+/// halved until the points come nearer (at most 16 steps): where the
+/// curves cross, or in space pass each other closest.
+void refine(const BezierCurve& a, const BezierCurve& b, double& s, double& t) {
+  double gap = distance(point_at(a, s), point_at(b, t));
+  for (int iteration = 0; iteration < 16 && gap > 0.0; ++iteration) {
+    double ds = 0.0, dt = 0.0;
+    if (!newton_step(a, b, s, t, ds, dt)) break;
     // The step, halved until it brings the points nearer (near a tangency
     // the Jacobian is nearly singular and the full step overshoots).
     double factor = 1.0, s1 = s, t1 = t, gap1 = gap;
@@ -186,7 +245,7 @@ int zone_multiplicity(const std::vector<double>& p, double t, double noise, int 
 }
 
 bool boxes_meet(const BezierCurve& a, const BezierCurve& b, double tolerance) {
-  for (int j = 0; j < 2; ++j) {
+  for (int j = 0; j < a.dimension(); ++j) {
     double a_low = INFINITY, a_high = -INFINITY, b_low = INFINITY, b_high = -INFINITY;
     for (std::size_t i = 0; i < a.control_points().size(); ++i)
       a_low = std::min(a_low, a.control_points()[i][j]), a_high = std::max(a_high, a.control_points()[i][j]);
@@ -350,7 +409,7 @@ int contact_order(const BezierCurve& a, double s, const BezierCurve& b, double t
   const double kb = orientation * kb0;
   const double size = std::max(size_of(a), size_of(b));
   const double scale = std::max({std::abs(ka), std::abs(kb), 1.0 / std::max(size, tolerances::kScaleFloor)});
-  if (std::abs(ka - kb) > 1e-4 * scale) return 2;
+  if (std::abs(ka - kb) > kIntersectionContactCurvature * scale) return 2;
   // Rates of change along the arc, by central differences over 1e-4 of each piece.
   const double h = 1e-4;
   double unused = 0.0;
@@ -359,7 +418,42 @@ int contact_order(const BezierCurve& a, double s, const BezierCurve& b, double t
                         (curvature(b, t + orientation * h, unused) - curvature(b, t - orientation * h, unused)) /
                         (2 * h * std::max(speed_b, 1e-300)) * orientation;
   const double rate_scale = std::max({std::abs(rate_a), std::abs(rate_b), scale / std::max(size, tolerances::kScaleFloor)});
-  return std::abs(rate_a - rate_b) > 1e-2 * rate_scale ? 3 : 4;
+  return std::abs(rate_a - rate_b) > kIntersectionContactRate * rate_scale ? 3 : 4;
+}
+
+/// Whether c is at or next to a cusp at u (in space): its velocity vanishes
+/// within kIntersectionContactZone of u, |C'(u)| <= kIntersectionContactZone
+/// |C''(u)| (near a cusp C' ~ C'' (u - u0); the curves stay within the
+/// tolerance over such a zone around it, and the nearest pairs found there
+/// are not crossings).
+bool at_cusp(const BezierCurve& c, double u) {
+  const std::vector<Point> d = derivatives_up_to(c, u, 2);
+  return std::sqrt(dot(d[1], d[1])) <= kIntersectionContactZone * std::sqrt(dot(d[2], d[2]));
+}
+
+/// The order of contact of two branches in space meeting with one tangent
+/// line at a(s) ~ b(t): 2 where their curvature vectors (C'' - (C'' . T) T)
+/// / |C'|^2 differ (relative to the larger, or to 1 / size), 3 where they
+/// agree (a contact of order 3 or more: osculating branches).
+int space_contact_order(const BezierCurve& a, double s, const BezierCurve& b, double t) {
+  // At a cusp (a singular point of multiplicity 2): 2 across its tangent
+  // (the direction of C'' there, known to about the contact zone's width,
+  // where the cusp is found), 3 along it.
+  for (const auto& [cusp, u, other, v] : {std::tuple{&a, s, &b, t}, std::tuple{&b, t, &a, s}})
+    if (at_cusp(*cusp, u))
+      return tangent_sine(derivative_at(*cusp, u, 2), derivative_at(*other, v, 1)) > kIntersectionContactZone ? 2 : 3;
+  const auto curvature_vector = [](const BezierCurve& c, double u) {
+    const std::vector<Point> d = derivatives_up_to(c, std::clamp(u, 0.0, 1.0), 2);
+    const double speed2 = std::max(dot(d[1], d[1]), tolerances::kScaleFloor);
+    const double along = dot(d[2], d[1]) / speed2;
+    Point k(d[1].size());
+    for (std::size_t i = 0; i < k.size(); ++i) k[i] = (d[2][i] - along * d[1][i]) / speed2;
+    return k;
+  };
+  const Point ka = curvature_vector(a, s), kb = curvature_vector(b, t);
+  const double size = std::max(size_of(a), size_of(b));
+  const double scale = std::max({std::sqrt(dot(ka, ka)), std::sqrt(dot(kb, kb)), 1.0 / std::max(size, tolerances::kScaleFloor)});
+  return distance(ka, kb) > kIntersectionContactCurvature * scale ? 2 : 3;
 }
 
 /// Where two pieces meet that their implicit equations cannot tell apart
@@ -386,6 +480,7 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
   std::vector<Pair> stack{{span_a, span_b, part_a, part_b}};
   const double scale = std::max(size_of(a), size_of(b));
   const double converged = kIntersectionConverged * std::max(scale, tolerances::kScaleFloor);
+  const bool plane = a.dimension() == 2;
   std::size_t visited = 0;
   const std::size_t first_new = found.size();
   std::vector<std::vector<std::pair<double, double>>> zones;  // the solutions of each new hit
@@ -417,11 +512,15 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
       if (!(distance(point_at(a, s), point_at(a, 0.5 * (s + t))) > tolerance)) continue;
       if (s > t) std::swap(s, t);
     }
-    const Point ds = derivative_at(a, s, 1), dt = derivative_at(b, t, 1);
-    const double sine = std::abs(ds[0] * dt[1] - ds[1] * dt[0]) /
-                        std::max(std::hypot(ds[0], ds[1]) * std::hypot(dt[0], dt[1]), tolerances::kScaleFloor);
-    const bool crossing = sine > kIntersectionTangentSine;
-    if (crossing && gap > converged) continue;
+    bool crossing = tangent_sine(derivative_at(a, s, 1), derivative_at(b, t, 1)) > kIntersectionTangentSine;
+    // In the plane two branches with distinct tangents cross: Newton must
+    // have converged to rounding. In space they may pass within the
+    // tolerance without meeting; Gauss-Newton gave their nearest pair.
+    if (crossing && plane && gap > converged) continue;
+    // In space, a pair within the tolerance that is not the nearest pair of
+    // two branches passing each other belongs to a contact zone, and so does
+    // a cusp of either (its tangent is the limit of C'' there, not C').
+    if (crossing && !plane && (!converged_pair(a, b, s, t) || at_cusp(a, s) || at_cusp(b, t))) crossing = false;
     // Crossings seen twice land within rounding; tangent solutions spread
     // over the contact zone, where the curves stay within the tolerance: one
     // tangency per zone.
@@ -441,16 +540,26 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
     found.push_back({s, t, crossing ? IntersectionKind::transversal : IntersectionKind::tangent, crossing ? 1 : 2});
     zones.push_back({{s, t}});
   }
-  // A zone's tangency: its median solution (a pair that meets, in the middle of the zone).
+  // A zone's tangency: the median of its solutions where the curves come
+  // nearest (within rounding of the least gap): the contact, where the gap
+  // grows away from it; the middle of the zone, where rounding hides it.
   for (std::size_t k = first_new; k < found.size(); ++k) {
     if (found[k].kind != IntersectionKind::tangent) continue;
     std::vector<std::pair<double, double>>& zone = zones[k - first_new];
-    std::sort(zone.begin(), zone.end());
-    found[k].s = zone[zone.size() / 2].first;
-    found[k].t = zone[zone.size() / 2].second;
+    std::vector<double> gaps;
+    for (const auto& [s, t] : zone) gaps.push_back(distance(point_at(a, s), point_at(b, t)));
+    const double least = *std::min_element(gaps.begin(), gaps.end());
+    std::vector<std::pair<double, double>> nearest;
+    for (std::size_t i = 0; i < zone.size(); ++i)
+      if (gaps[i] <= least + converged) nearest.push_back(zone[i]);
+    std::sort(nearest.begin(), nearest.end());
+    found[k].s = nearest[nearest.size() / 2].first;
+    found[k].t = nearest[nearest.size() / 2].second;
   }
   for (std::size_t k = first_new; k < found.size(); ++k)
-    if (found[k].kind == IntersectionKind::tangent) found[k].multiplicity = contact_order(a, found[k].s, b, found[k].t);
+    if (found[k].kind == IntersectionKind::tangent)
+      found[k].multiplicity = plane ? contact_order(a, found[k].s, b, found[k].t)
+                                    : space_contact_order(a, found[k].s, b, found[k].t);
 }
 
 /// Tangencies of one contact zone found from several pairs of parts: one,
@@ -489,6 +598,118 @@ void merge_tangent_zones(const BezierCurve& a, const BezierCurve& b, double tole
   hits = std::move(result);
 }
 
+/// A point of two pieces on one curve: a(s) = b(t).
+struct SharedPoint {
+  double s, t;
+};
+
+/// The end points of either piece that lie on the other (within the
+/// tolerance), by s.
+std::vector<SharedPoint> ends_on_each_other(const BezierCurve& a, const BezierCurve& b, double tolerance) {
+  std::vector<SharedPoint> pairs;
+  for (const double t : {0.0, 1.0}) {
+    const NearestPoint on = closest_point(a, point_at(b, t)).value();
+    if (on.distance <= tolerance) pairs.push_back({on.parameter, t});
+  }
+  for (const double s : {0.0, 1.0}) {
+    const NearestPoint on = closest_point(b, point_at(a, s)).value();
+    if (on.distance <= tolerance) pairs.push_back({s, on.parameter});
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const SharedPoint& x, const SharedPoint& y) { return x.s < y.s; });
+  return pairs;
+}
+
+/// Whether the pair of sub-curves si x ti lies along the stretch the shared
+/// points span (every such pair meets: they are dropped once small, not at
+/// the start).
+bool on_shared_stretch(const std::vector<SharedPoint>& pairs, Interval si, Interval ti) {
+  if (pairs.empty() || std::max(si.length(), ti.length()) > kIntersectionContactZone) return false;
+  return along_segment(si, ti, pairs.front().s, pairs.front().t, pairs.back().s, pairs.back().t,
+                       kIntersectionSubdivisionWidth);
+}
+
+/// What the shared points of two pieces of one curve make: the overlap from
+/// the first to the last, or, where they span no stretch, a tangency of order
+/// 0 (two arcs continuing one another at a point).
+Hit shared_hit(const std::vector<SharedPoint>& pairs) {
+  const SharedPoint first = pairs.front(), last = pairs.back();
+  if (!(last.s - first.s > kIntersectionJointSlack)) return {first.s, first.t, IntersectionKind::tangent, 0};
+  Hit overlap{first.s, first.t, IntersectionKind::overlap, 0};
+  overlap.s_end = last.s;
+  overlap.t_end = last.t;
+  return overlap;
+}
+
+/// The hit with its two pieces exchanged when `swap` (an overlap still from
+/// its lower parameter on the first).
+Hit oriented(Hit hit, bool swap) {
+  if (!swap) return hit;
+  std::swap(hit.s, hit.t);
+  std::swap(hit.s_end, hit.t_end);
+  if (hit.kind == IntersectionKind::overlap && hit.s_end < hit.s) {
+    std::swap(hit.s, hit.s_end);
+    std::swap(hit.t, hit.t_end);
+  }
+  return hit;
+}
+
+/// Whether b traces a between two shared points: 2 (n + m) + 1 points of a
+/// between them lie within the tolerance of b (two distinct polynomial
+/// curves of degrees n and m agree at most at n m points of a stretch).
+bool trace_one_another(const BezierCurve& a, const BezierCurve& b, SharedPoint first, SharedPoint last,
+                       double tolerance) {
+  const int samples = 2 * (a.degree() + b.degree()) + 1;
+  for (int k = 1; k <= samples; ++k) {
+    const double s = first.s + (last.s - first.s) * k / (samples + 1);
+    if (closest_point(b, point_at(a, s)).value().distance > tolerance) return false;
+  }
+  return true;
+}
+
+/// Whether b continues a at a shared end point (two pieces of one curve
+/// meeting there): b's points kIntersectionZoneReach either side of it lie
+/// within the tolerance of a's polynomial extended beyond the piece (pieces
+/// that only join with high continuity part by far more there).
+bool continue_one_another(const BezierCurve& a, const BezierCurve& b, SharedPoint shared, double tolerance) {
+  const BezierCurve extended = extended_segment(a, shared.s - 0.5, shared.s + 0.5);
+  int checked = 0;
+  for (const double side : {-kIntersectionZoneReach, kIntersectionZoneReach}) {
+    const double t = shared.t + side;
+    if (t < 0.0 || t > 1.0) continue;
+    if (closest_point(extended, point_at(b, t)).value().distance > tolerance) return false;
+    ++checked;
+  }
+  return checked > 0;
+}
+
+/// The intersections of two pieces in R^d, d >= 3: the overlap where each
+/// traces the other between shared points, a tangency of order 0 where one
+/// continues the other, and the points where they come within the tolerance
+/// (subdivision of their boxes and Gauss-Newton on the nearest pair),
+/// classified by their tangents.
+std::vector<Hit> space_piece_hits(const BezierCurve& a, const BezierCurve& b, double tolerance) {
+  std::vector<Hit> hits;
+  std::vector<SharedPoint> pairs = ends_on_each_other(a, b, tolerance);
+  const bool overlap = pairs.size() >= 2 && pairs.back().s - pairs.front().s > kIntersectionJointSlack &&
+                       trace_one_another(a, b, pairs.front(), pairs.back(), tolerance);
+  std::vector<SharedPoint> continued;
+  if (!overlap)
+    for (const SharedPoint& p : pairs)
+      if (continue_one_another(a, b, p, tolerance)) continued.push_back(p);
+  const auto shared = [&](Interval si, Interval ti) {
+    if (overlap) return on_shared_stretch(pairs, si, ti);
+    return std::any_of(continued.begin(), continued.end(),
+                       [&](const SharedPoint& p) { return on_shared_stretch({p}, si, ti); });
+  };
+  subdivided_hits(a, {0.0, 1.0}, a, b, {0.0, 1.0}, b, false, tolerance, shared, hits);
+  // Around a cusp the nearest pairs spread along a zone the midpoint test of
+  // subdivided_hits does not join (the parameter is quadratic there).
+  merge_tangent_zones(a, b, tolerance, hits);
+  if (overlap) hits.push_back(shared_hit(pairs));
+  for (const SharedPoint& p : continued) hits.push_back(shared_hit({p}));
+  return hits;
+}
+
 /// The intersections of piece a with piece b (local parameters).
 std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double tolerance) {
   std::vector<Hit> hits;
@@ -504,6 +725,7 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
                       IntersectionKind::transversal, 1});
     return hits;
   }
+  if (a.dimension() != 2) return space_piece_hits(a, b, tolerance);
   // Implicitize the piece of lower degree (the Bézout matrix is n x n).
   const bool swap = a.degree() > b.degree();
   const BezierCurve& implicit = swap ? b : a;
@@ -520,45 +742,14 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
   const double noise = tolerances::kRoundingSlack * static_cast<double>(p.value.size()) * 4.0 * largest_magnitude;
   if (largest <= noise) {
     // One algebraic curve: the end points of each piece that lie on the other.
-    struct Pair {
-      double s, t;
-    };
-    std::vector<Pair> pairs;
-    for (const double t : {0.0, 1.0}) {
-      const NearestPoint on = closest_point(implicit, point_at(other, t)).value();
-      if (on.distance <= tolerance) pairs.push_back({on.parameter, t});
-    }
-    for (const double s : {0.0, 1.0}) {
-      const NearestPoint on = closest_point(other, point_at(implicit, s)).value();
-      if (on.distance <= tolerance) pairs.push_back({s, on.parameter});
-    }
-    std::sort(pairs.begin(), pairs.end(), [](const Pair& x, const Pair& y) { return x.s < y.s; });
+    const std::vector<SharedPoint> pairs = ends_on_each_other(implicit, other, tolerance);
     // Crossings where the algebraic curve passes twice through a point (a
     // double point), away from the shared stretch or point.
     std::vector<Hit> crossings;
-    const auto shared = [&](Interval si, Interval ti) {
-      // Pairs along the shared stretch all meet: dropped once small, not at the start.
-      if (pairs.empty() || std::max(si.length(), ti.length()) > kIntersectionContactZone) return false;
-      return along_segment(si, ti, pairs.front().s, pairs.front().t, pairs.back().s, pairs.back().t,
-                           kIntersectionSubdivisionWidth);
-    };
+    const auto shared = [&](Interval si, Interval ti) { return on_shared_stretch(pairs, si, ti); };
     subdivided_hits(implicit, {0.0, 1.0}, implicit, other, {0.0, 1.0}, other, false, tolerance, shared, crossings);
     for (const Hit& crossing : crossings) emit(crossing.s, crossing.t, crossing.kind, crossing.multiplicity);
-    if (pairs.empty()) return hits;
-    const Pair first = pairs.front(), last = pairs.back();
-    if (last.s - first.s > kIntersectionJointSlack) {
-      Hit overlap = swap ? Hit{first.t, first.s, IntersectionKind::overlap, 0}
-                         : Hit{first.s, first.t, IntersectionKind::overlap, 0};
-      overlap.s_end = swap ? last.t : last.s;
-      overlap.t_end = swap ? last.s : last.t;
-      if (overlap.s_end < overlap.s) {
-        std::swap(overlap.s, overlap.s_end);
-        std::swap(overlap.t, overlap.t_end);
-      }
-      hits.push_back(overlap);
-    } else {
-      emit(first.s, first.t, IntersectionKind::tangent, 0);
-    }
+    if (!pairs.empty()) hits.push_back(oriented(shared_hit(pairs), swap));
     return hits;
   }
   const double scale = std::max(size_of(implicit), size_of(other));
@@ -629,9 +820,7 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
       if (multiplicity == 1 || branches.size() > 1) {
         // A simple root, or one branch of the implicit curve's double point:
         // transversal where the tangents differ.
-        const Point ta = derivative_at(implicit, s, 1), tb = derivative_at(other, t, 1);
-        const double sine = std::abs(ta[0] * tb[1] - ta[1] * tb[0]) /
-                            std::max(std::hypot(ta[0], ta[1]) * std::hypot(tb[0], tb[1]), tolerances::kScaleFloor);
+        const double sine = tangent_sine(derivative_at(implicit, s, 1), derivative_at(other, t, 1));
         if (multiplicity == 1 || sine > kIntersectionTangentSine) {
           refine(implicit, other, s, t);
           emit(s, t, IntersectionKind::transversal, 1);
@@ -665,9 +854,12 @@ Tolerance default_intersection_tolerance(CurveView a, CurveView b) {
 
 Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b, Tolerance tolerance) {
   for (const auto& [curve, which] : {std::pair{a, "first"}, std::pair{b, "second"}})
-    if (curve.dimension() != 2)
-      return Error{std::string("intersections need plane curves, the ") + which + " lives in R^" +
+    if (curve.dimension() < 2)
+      return Error{std::string("intersections need curves in R^2 or more, the ") + which + " lives in R^" +
                    std::to_string(curve.dimension())};
+  if (a.dimension() != b.dimension())
+    return Error{"intersections need curves in one space, the first lives in R^" + std::to_string(a.dimension()) +
+                 ", the second in R^" + std::to_string(b.dimension())};
   if (!(std::isfinite(tolerance.distance) && tolerance.distance > 0.0))
     return Error{"the intersection tolerance is " + std::to_string(tolerance.distance) + ", it must be finite and > 0"};
   const BezierPieces pa = to_bezier_pieces(a), pb = to_bezier_pieces(b);

@@ -34,6 +34,7 @@
 #include "casteljau/ops/arc_length.hpp"
 #include "casteljau/ops/bounds.hpp"
 #include "casteljau/ops/closest_point.hpp"
+#include "casteljau/ops/curvature_extrema.hpp"
 #include "casteljau/ops/inflections.hpp"
 #include "casteljau/ops/intersection.hpp"
 #include "casteljau/curves/differential_geometry.hpp"
@@ -241,17 +242,31 @@ double largest_curvature_jump(CurveView curve) {
   return worst;
 }
 
-/// The inflections of a plane curve as markers.
-Status add_inflections(Panel& panel, CurveView curve) {
-  auto inflections = inflection_parameters(curve);
-  if (!inflections) return inflections.error();
+/// Markers at the points C(u) of a plane curve, labelled once per panel.
+void add_markers_at(Panel& panel, CurveView curve, const std::vector<double>& parameters, Color color,
+                    const char* label) {
   std::vector<Vec2> points;
-  for (const double u : *inflections) {
+  for (const double u : parameters) {
     const Point p = point_at(curve, u);
     points.push_back(Vec2{{p[0], p[1]}});
   }
-  if (!points.empty())
-    panel.markers.push_back({std::move(points), cycle_color(3), 7.0 * kPixelsPerPoint, label_once(panel, "inflections")});
+  if (!points.empty()) panel.markers.push_back({std::move(points), color, 7.0 * kPixelsPerPoint, label_once(panel, label)});
+}
+
+/// The inflections, the maxima of |curvature| and the cusps of a plane curve as markers.
+Status add_curvature_features(Panel& panel, CurveView curve) {
+  auto inflections = inflection_parameters(curve);
+  if (!inflections) return inflections.error();
+  auto extrema = curvature_extrema(curve);
+  if (!extrema) return extrema.error();
+  auto cusps = cusp_parameters(curve);
+  if (!cusps) return cusps.error();
+  std::vector<double> maxima;
+  for (const CurvatureExtremum& e : *extrema)
+    if (e.maximum) maxima.push_back(e.parameter);
+  add_markers_at(panel, curve, *inflections, cycle_color(3), "inflections");
+  add_markers_at(panel, curve, maxima, cycle_color(1), "curvature maxima");
+  add_markers_at(panel, curve, *cusps, cycle_color(2), "cusps");
   return {};
 }
 
@@ -289,12 +304,12 @@ Expected<GalleryFigure> car_curvature_combs_figure(const PointArray& car, const 
       panel.title = fmt::format("C¹ Bézier (α = 1): curvature jumps up to {:.3g} at the joints", jump1);
       add_pieces(panel, c1, false, colors::black, "C¹ curve");
       add_curvature_comb(panel, c1, 0.08 * size, 24, cycle_color(0), reference);
-      if (auto ok = add_inflections(panel, c1); !ok) return ok.error();
+      if (auto ok = add_curvature_features(panel, c1); !ok) return ok.error();
     } else {
       panel.title = fmt::format("C² natural cubic, chord length: largest jump {:.1g}", jump2);
       if (auto ok = add_bspline(panel, c2, BSplinePlotOptions{}, colors::black); !ok) return ok.error();
       add_curvature_comb(panel, c2, 0.08 * size, 24, cycle_color(0), reference);
-      if (auto ok = add_inflections(panel, c2); !ok) return ok.error();
+      if (auto ok = add_curvature_features(panel, c2); !ok) return ok.error();
     }
     add_data_points(panel, car);
     figure.panels.push_back(std::move(panel));
@@ -303,7 +318,8 @@ Expected<GalleryFigure> car_curvature_combs_figure(const PointArray& car, const 
       "36_car_curvature_combs",
       fmt::format("Curvature combs (teeth along the normal, outside each bend, one scale for both, teeth cut at twice "
                   "the C² curve's longest) of the car's two "
-                  "interpolants, inflections marked (ops/inflections.hpp). The C¹ Bézier curve of seed 000 matches "
+                  "interpolants, inflections (ops/inflections.hpp) and the maxima of |curvature| inside the pieces and at "
+                  "joints where it is continuous (ops/curvature_extrema.hpp) marked. The C¹ Bézier curve of seed 000 matches "
                   "tangents at the data points but not curvatures: its comb breaks at every joint (largest jump "
                   "{:.3g}); the C² cubic's comb runs on unbroken (largest jump {:.1g}, rounding).",
                   jump1, jump2),

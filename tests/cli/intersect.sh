@@ -40,8 +40,15 @@ check "none" '{"intersections": []}' intersect "$work/a.json" "$work/far.json"
   { echo "FAIL: -o"; failures=$((failures + 1)); }
 
 model space.json '{"type": "bezier", "control_points": [[0,0,0],[1,1,1]]}'
-expect_error "a 3D curve" "intersections need plane curves, the second lives in R^3" \
+expect_error "a 2D and a 3D curve" "intersections need curves in one space, the first lives in R^2, the second in R^3" \
   intersect "$work/a.json" "$work/space.json"
+model space2.json '{"type": "bezier", "control_points": [[0,1,0],[1,0,1]]}'
+check "crossing lines in space" \
+  "$(printf '{"intersections": [\n  {"kind": "transversal", "a": 0.5, "b": 0.5, "point": [0.5, 0.5, 0.5]}\n]}')" \
+  intersect "$work/space.json" "$work/space2.json"
+model line1d.json '{"type": "bezier", "control_points": [[0],[1]]}'
+expect_error "a 1D curve" "intersections need curves in R^2 or more, the first lives in R^1" \
+  intersect "$work/line1d.json" "$work/line1d.json"
 expect_error "a surface" "intersect takes curves; the bezier_surface model in" intersect "$examples/patch.json"
 expect_error "bad tolerance" "--tolerance: 0 is not > 0" intersect "$work/a.json" "$work/b.json" --tolerance 0
 model two.json '{"models": [{"type": "bezier", "control_points": [[0,0],[3,4]]}, {"type": "bezier", "control_points": [[0,0],[1,0]]}]}'

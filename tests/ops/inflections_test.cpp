@@ -11,48 +11,37 @@
 #include <cmath>
 #include <vector>
 
-#include "casteljau/bezier/bernstein.hpp"
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/curves/differential_geometry.hpp"
 #include "casteljau/nurbs/conics.hpp"
 #include "support/bspline_generators.hpp"
+#include "support/power_curves.hpp"
 
 namespace casteljau {
 namespace {
 
-/// The graph (t, y(t)) on [0, 1] of y = sum a_j t^j, in Bernstein form:
-/// b_i = sum_{j <= i} C(i, j) / C(n, j) a_j (and x = t has b_i = i / n).
-BezierCurve graph(const std::vector<double>& power) {
-  const int n = static_cast<int>(power.size()) - 1;
-  std::vector<std::vector<double>> rows;
-  for (int i = 0; i <= n; ++i) {
-    double y = 0.0;
-    for (int j = 0; j <= i; ++j) y += binomial(i, j) / binomial(n, j) * power[j];
-    rows.push_back({static_cast<double>(i) / n, y});
-  }
-  return BezierCurve::make(PointArray::make(rows).value()).value();
-}
+using test::polynomial_graph;
 
 TEST(Inflections, OfCubicAndQuarticGraphs) {
   // y = (t - 1/2)^3 = t^3 - 1.5 t^2 + 0.75 t - 0.125: y'' = 6 (t - 1/2).
-  const auto cubic = inflection_parameters(graph({-0.125, 0.75, -1.5, 1.0})).value();
+  const auto cubic = inflection_parameters(polynomial_graph({-0.125, 0.75, -1.5, 1.0})).value();
   ASSERT_EQ(cubic.size(), 1u);
   EXPECT_NEAR(cubic[0], 0.5, 1e-15);
   // y = (t - 1/2)^4 - 0.05 (t - 1/2)^2: y'' = 12 (t - 1/2)^2 - 0.1, zero at 1/2 +- sqrt(0.1 / 12).
   const double c = 0.5;
   const std::vector<double> quartic{std::pow(c, 4) - 0.05 * c * c, -4 * std::pow(c, 3) + 0.1 * c,
                                     6 * c * c - 0.05, -4 * c, 1.0};
-  const auto two = inflection_parameters(graph(quartic)).value();
+  const auto two = inflection_parameters(polynomial_graph(quartic)).value();
   ASSERT_EQ(two.size(), 2u);
   EXPECT_NEAR(two[0], 0.5 - std::sqrt(0.1 / 12), 1e-13);
   EXPECT_NEAR(two[1], 0.5 + std::sqrt(0.1 / 12), 1e-13);
   // y = (t - 1/2)^4: y'' = 12 (t - 1/2)^2 touches zero: a flat point, no inflection.
-  EXPECT_TRUE(inflection_parameters(graph({0.0625, -0.5, 1.5, -2.0, 1.0})).value().empty());
+  EXPECT_TRUE(inflection_parameters(polynomial_graph({0.0625, -0.5, 1.5, -2.0, 1.0})).value().empty());
 }
 
 TEST(Inflections, OnEveryKindAndNoneOnTheCircle) {
-  const BezierCurve cubic = graph({-0.125, 0.75, -1.5, 1.0});
+  const BezierCurve cubic = polynomial_graph({-0.125, 0.75, -1.5, 1.0});
   const BSplineCurve as_bspline = to_bspline(cubic);
   EXPECT_NEAR(inflection_parameters(as_bspline).value().at(0), 0.5, 1e-15);
   const PiecewiseBezierCurve piecewise = PiecewiseBezierCurve::make({cubic, cubic}).value();

@@ -5,6 +5,10 @@
 // pieces of a piecewise curve), shared end points, hits at knots reported
 // once, nearly parallel lines, and the self-intersection of a loop at
 // (5 - sqrt 15) / 10; every kind; bad input. Parameter errors are in ulps.
+// In space: the twisted cubic (t, t^2, t^3) and a line through its point at
+// 1/2 (a crossing), the line moved off it by 1e-12 (a meeting within the
+// tolerance) and by 1e-6 (none), its tangent line (a tangency), its own
+// segment (an overlap both ways), a hit at a knot once.
 #include "casteljau/ops/intersection.hpp"
 
 #include <gtest/gtest.h>
@@ -12,10 +16,12 @@
 #include <cmath>
 #include <vector>
 
+#include "casteljau/bezier/piecewise_bezier.hpp"
 #include "casteljau/bezier/split.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/nurbs/conics.hpp"
+#include "support/power_curves.hpp"
 
 namespace casteljau {
 namespace {
@@ -144,11 +150,86 @@ TEST(SelfIntersections, OfALoopAndNoneAtACusp) {
   EXPECT_FALSE(crossing.empty());
 }
 
+/// The twisted cubic (t, t^2, t^3) on [0, 1] and, at its point (1/2, 1/4,
+/// 1/8), the line through it along `direction` (u = 1/2 there), moved by
+/// `offset`.
+BezierCurve twisted_cubic() { return test::power_curve({{0, 1}, {0, 0, 1}, {0, 0, 0, 1}}); }
+
+BezierCurve line_through_middle(const std::vector<double>& direction, const std::vector<double>& offset) {
+  const std::vector<double> p{0.5, 0.25, 0.125};
+  std::vector<std::vector<double>> rows(2, std::vector<double>(3));
+  for (int i = 0; i < 3; ++i) {
+    rows[0][i] = p[i] - 0.5 * direction[i] + offset[i];
+    rows[1][i] = p[i] + 0.5 * direction[i] + offset[i];
+  }
+  return bezier(rows);
+}
+
+TEST(SpaceIntersections, CrossingsMeetingsWithinTheToleranceAndNearMisses) {
+  const BezierCurve cubic = twisted_cubic();
+  const std::vector<double> direction{1, -1, 2};
+  const auto crossing = between(cubic, line_through_middle(direction, {0, 0, 0}));
+  ASSERT_EQ(crossing.size(), 1u);
+  EXPECT_EQ(crossing[0].kind, IntersectionKind::transversal);
+  EXPECT_LE(ulps(crossing[0].a.lower, 0.5), 4);
+  EXPECT_LE(ulps(crossing[0].b.lower, 0.5), 4);
+  EXPECT_NEAR(crossing[0].point[2], 0.125, 1e-16);
+  // Moved along the common normal a'(1/2) x direction = (2.75, -1.25, -2).
+  const std::vector<double> normal{2.75, -1.25, -2};
+  const double length = std::sqrt(2.75 * 2.75 + 1.25 * 1.25 + 4);
+  const auto moved = [&](double by) {
+    std::vector<double> offset(3);
+    for (int i = 0; i < 3; ++i) offset[i] = by * normal[i] / length;
+    return line_through_middle(direction, offset);
+  };
+  const auto close = between(cubic, moved(1e-12));  // the tolerance is 1e-9 of the size
+  ASSERT_EQ(close.size(), 1u);
+  EXPECT_EQ(close[0].kind, IntersectionKind::transversal);
+  EXPECT_NEAR(close[0].a.lower, 0.5, 1e-11);
+  EXPECT_NEAR(close[0].b.lower, 0.5, 1e-11);
+  EXPECT_TRUE(between(cubic, moved(1e-6)).empty());
+  // The tangent line at 1/2, along a'(1/2) = (1, 1, 3/4): one tangency.
+  const auto touching = between(cubic, line_through_middle({1, 1, 0.75}, {0, 0, 0}));
+  ASSERT_EQ(touching.size(), 1u);
+  EXPECT_EQ(touching[0].kind, IntersectionKind::tangent);
+  EXPECT_EQ(touching[0].multiplicity, 2);
+  EXPECT_NEAR(touching[0].a.lower, 0.5, 1e-4);
+  // A line in R^3 and a curve in R^2 are refused.
+  EXPECT_FALSE(intersections(cubic, bezier({{0, 0}, {1, 1}}), Tolerance{1e-9}));
+}
+
+TEST(SpaceIntersections, OverlapsAndKnots) {
+  const BezierCurve cubic = twisted_cubic();
+  const BezierCurve middle = segment(cubic, 0.25, 0.75).value();
+  const auto same = between(cubic, middle);
+  ASSERT_EQ(same.size(), 1u);
+  EXPECT_EQ(same[0].kind, IntersectionKind::overlap);
+  EXPECT_NEAR(same[0].a.lower, 0.25, 1e-12);
+  EXPECT_NEAR(same[0].a.upper, 0.75, 1e-12);
+  EXPECT_NEAR(same[0].b.lower, 0.0, 1e-12);
+  EXPECT_NEAR(same[0].b.upper, 1.0, 1e-12);
+  const auto back = between(cubic, reversed(middle));
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].kind, IntersectionKind::overlap);
+  EXPECT_NEAR(back[0].b.lower, 1.0, 1e-12);
+  EXPECT_NEAR(back[0].b.upper, 0.0, 1e-12);
+  // The cubic cut at 1/2 into two pieces: the crossing at the knot, once.
+  const auto [left, right] = split_at(cubic, 0.5).value();
+  const PiecewiseBezierCurve halves = PiecewiseBezierCurve::make({left, right}).value();
+  const auto at_knot = between(halves, line_through_middle({1, -1, 2}, {0, 0, 0}));
+  ASSERT_EQ(at_knot.size(), 1u);
+  EXPECT_EQ(at_knot[0].kind, IntersectionKind::transversal);
+  EXPECT_NEAR(at_knot[0].a.lower, 1.0, 1e-15);
+}
+
 TEST(Intersections, RefuseBadInput) {
   const BezierCurve plane = bezier({{0, 0}, {1, 1}});
   const BezierCurve space = bezier({{0, 0, 0}, {1, 1, 1}});
   EXPECT_EQ(intersections(plane, space, Tolerance{1e-9}).error().message,
-            "intersections need plane curves, the second lives in R^3");
+            "intersections need curves in one space, the first lives in R^2, the second in R^3");
+  const BezierCurve line = bezier({{0}, {1}});
+  EXPECT_EQ(intersections(line, line, Tolerance{1e-9}).error().message,
+            "intersections need curves in R^2 or more, the first lives in R^1");
   EXPECT_FALSE(intersections(plane, plane, Tolerance{0.0}));
   EXPECT_FALSE(self_intersections(space, Tolerance{1e-9}));
 }

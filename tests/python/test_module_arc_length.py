@@ -83,3 +83,26 @@ def test_inflections_of_a_cubic_graph_and_errors():
     assert cj.inflection_parameters(cj.make_circle((0, 0), 1.0)).size == 0
     with pytest.raises(ValueError, match="plane curve"):
         cj.inflection_parameters(cj.BezierCurve([[0, 0, 0], [1, 1, 1], [2, 0, 1]]))
+
+
+def test_curvature_extrema_and_cusps():
+    # The same S-curve: y = s^3 (s = t - 1/2) has its sharpest points where
+    # d/ds [6 s / (1 + 9 s^4)^(3/2)] = 0, s = +-45^(-1/4).
+    s_curve = cj.BezierCurve([[0, -0.125], [1 / 3, 0.125], [2 / 3, -0.125], [1, 0.125]])
+    parameters, curvatures, maxima = cj.curvature_extrema(s_curve)
+    s = 45.0 ** -0.25
+    np.testing.assert_allclose(parameters, [0.5 - s, 0.5 + s], atol=1e-14)
+    kappa = 6 * s / (1 + 9 * s**4) ** 1.5
+    np.testing.assert_allclose(curvatures, [-kappa, kappa], rtol=1e-13)
+    assert maxima.dtype == np.bool_ and maxima.tolist() == [True, True]
+    # The ellipse x^2/9 + y^2 = 1 from (3, 0): (0, 1) flattest, (-3, 0) sharpest, (0, -1).
+    parameters, curvatures, maxima = cj.curvature_extrema(cj.make_ellipse((0, 0), 3.0, 1.0))
+    np.testing.assert_allclose(curvatures, [1 / 9, 3.0, 1 / 9], rtol=1e-13)
+    assert maxima.tolist() == [False, True, False]
+    # The cusp of (0,0) (1,1) (0,1) (1,0) at t = 1/2, none on a circle.
+    cusp = cj.BezierCurve([[0, 0], [1, 1], [0, 1], [1, 0]])
+    np.testing.assert_allclose(cj.cusp_parameters(cusp), [0.5], atol=1e-15)
+    assert cj.cusp_parameters(cj.make_circle((0, 0), 1.0)).size == 0
+    for function in (cj.curvature_extrema, cj.cusp_parameters):
+        with pytest.raises(ValueError, match="R\\^2 or more"):
+            function(cj.BezierCurve([[0], [1], [3]]))

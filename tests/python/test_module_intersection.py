@@ -64,9 +64,18 @@ def test_self_intersection_of_a_loop():
 
 def test_errors():
     plane = cj.BezierCurve([[0, 0], [1, 1]])
-    with pytest.raises(ValueError, match="the second lives in R\\^3"):
+    with pytest.raises(ValueError, match="the first lives in R\\^2, the second in R\\^3"):
         cj.intersections(plane, cj.BezierCurve([[0, 0, 0], [1, 1, 1]]))
     with pytest.raises(TypeError, match="b is a int"):
         cj.intersections(plane, 3)
     with pytest.raises(ValueError, match="tolerance"):
         cj.intersections(plane, plane, -1.0)
+
+
+def test_space_curves_meet_within_the_tolerance():
+    # Two segments of R^3 crossing at (1/2, 1/2, 1/2), and one moved off by 1e-6.
+    a = cj.BezierCurve([[0, 0, 0], [1, 1, 1]])
+    (x,) = cj.intersections(a, cj.BezierCurve([[0, 1, 0], [1, 0, 1]]))
+    assert x["kind"] == "transversal" and x["a"] == pytest.approx(0.5, abs=1e-15)
+    np.testing.assert_allclose(x["point"], [0.5, 0.5, 0.5], atol=1e-15)
+    assert cj.intersections(a, cj.BezierCurve([[0, 1, 1e-6], [1, 0, 1 + 1e-6]])) == []

@@ -93,6 +93,16 @@ inline constexpr double kIntersectionZoneReach = 5e-2;
 /// sub-curves this narrow in their parameter, where Newton takes over.
 inline constexpr double kIntersectionSubdivisionWidth = 1e-6;
 
+/// The order of contact of a tangency (ops/intersection): the two branches'
+/// curvatures (in space, curvature vectors) count as equal below this
+/// fraction of the larger (or of 1 / size), and then their rates of change
+/// along the arc below kIntersectionContactRate of the larger. A tangency is
+/// known to about 1e-8 of a piece, its curvatures to about 1e-6 and their
+/// rates, by central differences over 1e-4 of the piece, to about 1e-3 (the
+/// corpus' contacts of order 2 to 4 sit orders of magnitude either side).
+inline constexpr double kIntersectionContactCurvature = 1e-4;
+inline constexpr double kIntersectionContactRate = 1e-2;
+
 /// Largest number of quadrature intervals one arc-length computation may use
 /// (15 evaluations each). A curve that needs more at the requested accuracy
 /// (a tolerance tiny against a long, wildly varying curve) is refused rather
@@ -109,6 +119,40 @@ inline constexpr long kMaxArcLengthIntervals = 1L << 22;
 /// room; a near tie that close is a tie at any accuracy users ask for.
 /// Dimensionless (a fraction of the largest squared distance).
 inline constexpr double kClosestPointTieSlack = 64.0 * 2.220446049250313e-16;
+
+/// Resolution, in a Bézier piece's parameter t in [0, 1], of the roots that
+/// inflections, curvature extrema and cusps are found at (ops/inflections,
+/// ops/curvature_extrema): bernstein_roots stops splitting below it, and a
+/// root this close to an end of a piece is taken as that end (the junction
+/// logic decides there, so a point at a knot is reported once). 1e-12 is a
+/// thousand times the resolution a simple root reaches and far below any
+/// feature a curve's parameter can show. Unit: fraction of the piece's span.
+inline constexpr double kCurvatureRootResolution = 1e-12;
+
+/// A piece has constant curvature (a segment, a circular arc) when every
+/// coefficient of the numerator N of dkappa/dt (ops/curvature_extrema) is
+/// below this fraction of the largest coefficient of the two products it is
+/// the difference of: what is left is their rounding (a few hundred ulps for
+/// the degree-24 products of a rational cubic), not a variation of kappa.
+/// 1e-10 is well above that noise; a real variation of kappa by less than
+/// 1e-10 of its size is not a feature anyone looks for. Dimensionless.
+inline constexpr double kConstantCurvature = 1e-10;
+
+/// How far on each side of a stationary point (where a piece's velocity
+/// vanishes) ops/curvature_extrema looks to tell a cusp (the velocities
+/// there point opposite ways, as (t^2, t^3) at 0) from a stationary point on
+/// a smooth arc (the same way, as (t^3, t^5)). The point itself is known to
+/// about the cube root of the rounding for the latter (a triple root of
+/// P . P'), 1e-5 of the piece; 1e-4 is beyond that and below any loop a
+/// drawing shows at a point. Unit: fraction of the piece's span.
+inline constexpr double kCuspSide = 1e-4;
+
+/// The curvature is continuous across a junction of pieces (so a sign change
+/// of dkappa/dt there is an extremum, not a jump) when the two one-sided
+/// curvatures differ by less than this fraction of the larger: each is
+/// computed to about 1e-14 relative from the pieces' derivatives, and a C^1
+/// curve's jump is many orders larger. Dimensionless.
+inline constexpr double kCurvatureContinuity = 1e-9;
 
 /// Degree up to which kernels keep their de Casteljau triangle on the stack.
 /// Beyond it, a batch call allocates one workspace for the whole call.

@@ -27,6 +27,14 @@
 // order 2 to 4, overlaps, shared ends, hits at 0, 1/2 and 1, near misses by
 // one ulp, nearly parallel lines, loops, cusps, a tacnode); W8 in bench/
 // does the same on 10^4 random, tangent and near-tangent cubic pairs.
+//
+// Curves in space (R^3, or more) rarely meet exactly; there an intersection
+// is where they come within the tolerance: per pair of pieces whose boxes
+// meet, pairs of sub-curves are halved down to 1e-6 of a piece and
+// Gauss-Newton from their middles reaches the nearest pair of points; within
+// the tolerance it is reported, transversal when the tangents differ,
+// tangent otherwise (multiplicity 2, or 3 where the curvature vectors agree);
+// an overlap where each piece traces the other between shared end points.
 
 #include <vector>
 
@@ -69,15 +77,19 @@ struct CurveIntersection {
 /// the larger curve's size (size_of), tolerances::kDefaultIntersectionRelativeTolerance.
 Tolerance default_intersection_tolerance(CurveView a, CurveView b);
 
-/// Every intersection of the plane curves a and b, sorted by the parameter on
-/// a: points where they meet (closed domains: ends and knots included, each
+/// Every intersection of the curves a and b (plane curves, or curves of one
+/// space: see above), sorted by the parameter on a: points where they meet (closed domains: ends and knots included, each
 /// reported once), classified as above, and overlaps. Parameters of simple
 /// intersections are refined to full precision; a tangency is known to about
 /// the square root of the rounding (its parameter to ~1e-8 of the piece).
 /// `tolerance`: the distance within which a root of the implicit equation
 /// counts as a point of the other curve (a near miss closer than it is a
-/// tangency). Errors: a curve that is not plane ("intersections need plane
-/// curves, the first lives in R^3"), a tolerance not finite or <= 0.
+/// tangency; in space, the distance within which they count as meeting).
+/// The point of a meeting in space is a's (b's is within the tolerance).
+/// Errors: a curve in R^1 ("intersections need curves in R^2 or more, the
+/// first lives in R^1"), curves of two dimensions ("intersections need curves
+/// in one space, the first lives in R^2, the second in R^3"), a tolerance not
+/// finite or <= 0.
 Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b, Tolerance tolerance);
 
 /// The self-intersections of a plane curve: pairs of parameters a < b with
