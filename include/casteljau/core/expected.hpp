@@ -2,10 +2,25 @@
 // Expected<T>: the result of anything that reads untrusted data (style rule 5).
 // C++20 has no std::expected and the core throws no exceptions (it must build
 // with em++ without -fexceptions), so this small value type carries either a
-// T or an Error whose message names what is wrong and where.
+// T or an Error whose message names what is wrong and where. Its vocabulary
+// is C++23's std::expected's: has_value, value, error, value_or, and_then,
+// transform, or_else, transform_error, so code moves to the standard type by
+// renaming.
+//
+// Misuse is a program error, not bad input: value() (and *, ->) on an error,
+// or error() on a value, prints what was asked and the error's message to
+// stderr and aborts, in every build type ("casteljau: Expected::value() on an
+// error: weight 2 is -1, weights must be > 0"), where an unchecked access
+// would read a variant's other alternative. Not an exception: the library
+// builds without them, and a caller that wants to recover tests has_value()
+// or uses value_or / or_else.
 
-#include <cassert>
+#include <cassert>  // kept: files that assert have long found it here
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -17,26 +32,132 @@ struct Error {
   std::string message;
 };
 
-/// Either a value of type T or an Error. Checked access: value() asserts.
+template <class T>
+class Expected;
+
+namespace detail {
+
+/// The misuse of an Expected: what was asked, and the error's message when
+/// there is one, on stderr; then abort (every build type).
+[[noreturn]] inline void expected_misuse(const char* what, const Error* error) {
+  std::fprintf(stderr, "casteljau: %s%s%s\n", what, error ? ": " : "", error ? error->message.c_str() : "");
+  std::fflush(stderr);
+  std::abort();
+}
+
+template <class>
+inline constexpr bool is_expected = false;
+template <class T>
+inline constexpr bool is_expected<Expected<T>> = true;
+
+/// The Expected a transform's function result makes (Expected<void> for void).
+template <class U>
+using transformed_t = Expected<std::remove_cvref_t<U>>;
+
+}  // namespace detail
+
+/// Either a value of type T or an Error (std::expected<T, Error>'s
+/// vocabulary). Access is checked in every build: see the file's comment.
 template <class T>
 class [[nodiscard]] Expected {
  public:
+  using value_type = T;
+
   Expected(T value) : state_(std::in_place_index<0>, std::move(value)) {}  // NOLINT: implicit by design
   Expected(Error error) : state_(std::in_place_index<1>, std::move(error)) {}  // NOLINT
 
   bool has_value() const noexcept { return state_.index() == 0; }
   explicit operator bool() const noexcept { return has_value(); }
 
-  const T& value() const& { assert(has_value()); return *std::get_if<0>(&state_); }
-  T& value() & { assert(has_value()); return *std::get_if<0>(&state_); }
-  T&& value() && { assert(has_value()); return std::move(*std::get_if<0>(&state_)); }
+  /// The value; on an error, aborts with its message.
+  const T& value() const& {
+    if (!has_value()) detail::expected_misuse("Expected::value() on an error", std::get_if<1>(&state_));
+    return *std::get_if<0>(&state_);
+  }
+  T& value() & {
+    if (!has_value()) detail::expected_misuse("Expected::value() on an error", std::get_if<1>(&state_));
+    return *std::get_if<0>(&state_);
+  }
+  T&& value() && { return std::move(value()); }
   const T& operator*() const& { return value(); }
   T& operator*() & { return value(); }
-  T&& operator*() && { return std::move(*this).value(); }
+  T&& operator*() && { return std::move(value()); }
   const T* operator->() const { return &value(); }
   T* operator->() { return &value(); }
 
-  const Error& error() const { assert(!has_value()); return *std::get_if<1>(&state_); }
+  /// The error; on a value, aborts.
+  const Error& error() const {
+    if (has_value()) detail::expected_misuse("Expected::error() on a value", nullptr);
+    return *std::get_if<1>(&state_);
+  }
+
+  /// The value, or `fallback` converted to T on an error.
+  template <class U>
+  T value_or(U&& fallback) const& {
+    return has_value() ? value() : static_cast<T>(std::forward<U>(fallback));
+  }
+  template <class U>
+  T value_or(U&& fallback) && {
+    return has_value() ? std::move(value()) : static_cast<T>(std::forward<U>(fallback));
+  }
+
+  /// f(value) (an Expected<U>), or this error as an Expected<U>.
+  template <class F>
+  auto and_then(F&& f) const& {
+    using Result = std::remove_cvref_t<std::invoke_result_t<F, const T&>>;
+    static_assert(detail::is_expected<Result>, "and_then: the function must return an Expected");
+    return has_value() ? std::invoke(std::forward<F>(f), value()) : Result(error());
+  }
+  template <class F>
+  auto and_then(F&& f) && {
+    using Result = std::remove_cvref_t<std::invoke_result_t<F, T&&>>;
+    static_assert(detail::is_expected<Result>, "and_then: the function must return an Expected");
+    return has_value() ? std::invoke(std::forward<F>(f), std::move(value())) : Result(error());
+  }
+
+  /// Expected<U>(f(value)) (Expected<void> when f returns nothing), or this error.
+  template <class F>
+  auto transform(F&& f) const& {
+    using Result = detail::transformed_t<std::invoke_result_t<F, const T&>>;
+    if (!has_value()) return Result(error());
+    if constexpr (std::is_void_v<typename Result::value_type>) {
+      std::invoke(std::forward<F>(f), value());
+      return Result();
+    } else {
+      return Result(std::invoke(std::forward<F>(f), value()));
+    }
+  }
+  template <class F>
+  auto transform(F&& f) && {
+    using Result = detail::transformed_t<std::invoke_result_t<F, T&&>>;
+    if (!has_value()) return Result(error());
+    if constexpr (std::is_void_v<typename Result::value_type>) {
+      std::invoke(std::forward<F>(f), std::move(value()));
+      return Result();
+    } else {
+      return Result(std::invoke(std::forward<F>(f), std::move(value())));
+    }
+  }
+
+  /// This value, or f(error) (an Expected<T>: a recovery or another error).
+  template <class F>
+  Expected or_else(F&& f) const& {
+    static_assert(std::is_same_v<std::remove_cvref_t<std::invoke_result_t<F, const Error&>>, Expected>,
+                  "or_else: the function must return the same Expected");
+    return has_value() ? *this : std::invoke(std::forward<F>(f), error());
+  }
+  template <class F>
+  Expected or_else(F&& f) && {
+    static_assert(std::is_same_v<std::remove_cvref_t<std::invoke_result_t<F, const Error&>>, Expected>,
+                  "or_else: the function must return the same Expected");
+    return has_value() ? std::move(*this) : std::invoke(std::forward<F>(f), error());
+  }
+
+  /// This value, or the error f(error) (an Error: context added, say).
+  template <class F>
+  Expected transform_error(F&& f) const& {
+    return has_value() ? *this : Expected(Error(std::invoke(std::forward<F>(f), error())));
+  }
 
  private:
   std::variant<T, Error> state_;
@@ -46,11 +167,52 @@ class [[nodiscard]] Expected {
 template <>
 class [[nodiscard]] Expected<void> {
  public:
+  using value_type = void;
+
   Expected() = default;
   Expected(Error error) : error_(std::move(error)), failed_(true) {}  // NOLINT
   bool has_value() const noexcept { return !failed_; }
   explicit operator bool() const noexcept { return !failed_; }
-  const Error& error() const { assert(failed_); return error_; }
+
+  /// Nothing on success; on an error, aborts with its message.
+  void value() const {
+    if (failed_) detail::expected_misuse("Expected::value() on an error", &error_);
+  }
+  /// The error; on success, aborts.
+  const Error& error() const {
+    if (!failed_) detail::expected_misuse("Expected::error() on a value", nullptr);
+    return error_;
+  }
+
+  /// f() (an Expected<U>), or this error as an Expected<U>.
+  template <class F>
+  auto and_then(F&& f) const {
+    using Result = std::remove_cvref_t<std::invoke_result_t<F>>;
+    static_assert(detail::is_expected<Result>, "and_then: the function must return an Expected");
+    return failed_ ? Result(error_) : std::invoke(std::forward<F>(f));
+  }
+  /// Expected<U>(f()) (Expected<void> when f returns nothing), or this error.
+  template <class F>
+  auto transform(F&& f) const {
+    using Result = detail::transformed_t<std::invoke_result_t<F>>;
+    if (failed_) return Result(error_);
+    if constexpr (std::is_void_v<typename Result::value_type>) {
+      std::invoke(std::forward<F>(f));
+      return Result();
+    } else {
+      return Result(std::invoke(std::forward<F>(f)));
+    }
+  }
+  /// Success, or f(error) (an Expected<void>).
+  template <class F>
+  Expected or_else(F&& f) const {
+    return failed_ ? std::invoke(std::forward<F>(f), error_) : *this;
+  }
+  /// Success, or the error f(error).
+  template <class F>
+  Expected transform_error(F&& f) const {
+    return failed_ ? Expected(Error(std::invoke(std::forward<F>(f), error_))) : *this;
+  }
 
  private:
   Error error_{};
