@@ -653,12 +653,13 @@ Hit oriented(Hit hit, bool swap) {
   return hit;
 }
 
-/// Whether b traces a between two shared points: 2 (n + m) + 1 points of a
-/// between them lie within the tolerance of b (two distinct polynomial
-/// curves of degrees n and m agree at most at n m points of a stretch).
+/// Whether b traces a between two shared points: n m + 1 points of a
+/// between them lie within the tolerance of b (two distinct algebraic curves
+/// of degrees n and m share at most n m points, Bézout's theorem; within a
+/// tolerance this is the test's premise, not a proof).
 bool trace_one_another(const BezierCurve& a, const BezierCurve& b, SharedPoint first, SharedPoint last,
                        double tolerance) {
-  const int samples = 2 * (a.degree() + b.degree()) + 1;
+  const int samples = std::max(a.degree(), 1) * std::max(b.degree(), 1) + 1;
   for (int k = 1; k <= samples; ++k) {
     const double s = first.s + (last.s - first.s) * k / (samples + 1);
     if (closest_point(b, point_at(a, s)).value().distance > tolerance) return false;
