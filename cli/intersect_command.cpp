@@ -89,8 +89,8 @@ void add_intersect_command(CLI::App& app, int& status) {
   auto options = std::make_shared<IntersectOptions>();
   CLI::App* intersect = app.add_subcommand(
       "intersect",
-      "The intersections of the curves A and B (plane, or both in space), or the self-intersections of the plane "
-      "curve A alone, as JSON "
+      "The intersections of the curves A and B (plane, or both in space), or the self-intersections of A alone, "
+      "as JSON "
       "{\"intersections\": [...]} sorted by the parameter on A: each transversal, tangent (with its multiplicity) "
       "or overlap (the two parameter intervals) once, end points and knots included. Curves within --tolerance "
       "(default 1e-9 of the larger curve's size) count as meeting (docs/curves.md).");

@@ -419,8 +419,8 @@ void bind_ops(py::module_& module) {
         return intersection_list(unwrap(without_gil([&] { return self_intersections(view, accuracy); })));
       },
       py::arg("curve"), py::arg("tolerance") = py::none(),
-      "The self-intersections of a plane curve (a < b, both on it), as intersections() reports them; the joints "
-      "of its pieces and the seam of a closed curve are not self-intersections, nor is a cusp.");
+      "The self-intersections of a curve (plane or in space; a < b, both on it), as intersections() reports "
+      "them; the joints of its pieces and the seam of a closed curve are not self-intersections, nor is a cusp.");
 
   module.def(
       "flatten_segment_count",

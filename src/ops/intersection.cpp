@@ -270,33 +270,55 @@ void record(const Hit& hit, const BezierCurve& piece_a, Interval span_a, Interva
   (overlap ? overlaps : points).push_back(found);
 }
 
-/// Whether the hodograph's coefficients of a plane piece lie in an open half
-/// plane (the largest angular gap between them exceeds pi): then C' . d > 0
-/// inside for some direction d, and the piece is injective. For a rational
-/// piece, the coefficients of the numerator A' w - A w' of C' w^2.
-bool turns_less_than_half(const BezierCurve& piece) {
-  std::vector<double> dx, dy;
+/// The coefficients of a piece's hodograph, the zero ones left out: C''s
+/// control points, or for a rational piece those of the numerator
+/// A' w - A w' of C' w^2 (the same directions).
+std::vector<Point> hodograph_directions(const BezierCurve& piece) {
+  const int d = piece.dimension();
+  std::vector<std::vector<double>> coordinates(d);
   if (!piece.is_rational()) {
-    dx = derivative(column(piece.control_points(), 0));
-    dy = derivative(column(piece.control_points(), 1));
+    for (int j = 0; j < d; ++j) coordinates[j] = derivative(column(piece.control_points(), j));
   } else {
     const PointArray h = homogeneous_points(piece);
-    const std::vector<double> x = column(h, 0), y = column(h, 1), w = column(h, 2), w1 = derivative(w);
-    const auto numerator = [&](const std::vector<double>& c) {
+    const std::vector<double> w = column(h, d), w1 = derivative(w);
+    for (int j = 0; j < d; ++j) {
+      const std::vector<double> c = column(h, j);
       std::vector<double> left = bernstein_product(derivative(c), w), right = bernstein_product(c, w1);
       for (std::size_t i = 0; i < left.size(); ++i) left[i] -= right[i];
-      return left;
-    };
-    dx = numerator(x), dy = numerator(y);
+      coordinates[j] = std::move(left);
+    }
   }
-  std::vector<double> angles;
-  for (std::size_t i = 0; i < dx.size(); ++i)
-    if (dx[i] != 0.0 || dy[i] != 0.0) angles.push_back(std::atan2(dy[i], dx[i]));
-  if (angles.empty()) return true;  // a point: nothing to cross
-  std::sort(angles.begin(), angles.end());
-  double gap = angles.front() + 2 * M_PI - angles.back();
-  for (std::size_t i = 0; i + 1 < angles.size(); ++i) gap = std::max(gap, angles[i + 1] - angles[i]);
-  return gap > M_PI;
+  std::vector<Point> directions;
+  for (std::size_t i = 0; i < coordinates[0].size(); ++i) {
+    Point v(d);
+    for (int j = 0; j < d; ++j) v[j] = coordinates[j][i];
+    if (dot(v, v) > 0.0) directions.push_back(std::move(v));
+  }
+  return directions;
+}
+
+/// Whether the hodograph's coefficients lie in an open half plane (half
+/// space): then C' . m > 0 inside for some direction m, and the piece is
+/// injective. In the plane exactly (the largest angular gap between them
+/// exceeds pi); in space by a sufficient test: every coefficient has a
+/// positive component along the sum of their unit vectors.
+bool turns_less_than_half(const BezierCurve& piece) {
+  const std::vector<Point> directions = hodograph_directions(piece);
+  if (directions.empty()) return true;  // a point: nothing to cross
+  if (piece.dimension() == 2) {
+    std::vector<double> angles;
+    for (const Point& v : directions) angles.push_back(std::atan2(v[1], v[0]));
+    std::sort(angles.begin(), angles.end());
+    double gap = angles.front() + 2 * M_PI - angles.back();
+    for (std::size_t i = 0; i + 1 < angles.size(); ++i) gap = std::max(gap, angles[i + 1] - angles[i]);
+    return gap > M_PI;
+  }
+  Point mean(static_cast<std::size_t>(piece.dimension()), 0.0);
+  for (const Point& v : directions) {
+    const double length = std::sqrt(dot(v, v));
+    for (std::size_t j = 0; j < v.size(); ++j) mean[j] += v[j] / length;
+  }
+  return std::all_of(directions.begin(), directions.end(), [&](const Point& v) { return dot(v, mean) > 0.0; });
 }
 
 /// A part of one piece: its local interval and the part itself.
@@ -888,8 +910,9 @@ Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b,
 }
 
 Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tolerance tolerance) {
-  if (curve.dimension() != 2)
-    return Error{"self-intersections need a plane curve, this one lives in R^" + std::to_string(curve.dimension())};
+  if (curve.dimension() < 2)
+    return Error{"self-intersections need a curve in R^2 or more, this one lives in R^" +
+                 std::to_string(curve.dimension())};
   if (!(std::isfinite(tolerance.distance) && tolerance.distance > 0.0))
     return Error{"the intersection tolerance is " + std::to_string(tolerance.distance) + ", it must be finite and > 0"};
   const BezierPieces pieces = to_bezier_pieces(curve);

@@ -8,7 +8,8 @@
 // In space: the twisted cubic (t, t^2, t^3) and a line through its point at
 // 1/2 (a crossing), the line moved off it by 1e-12 (a meeting within the
 // tolerance) and by 1e-6 (none), its tangent line (a tangency), its own
-// segment (an overlap both ways), a hit at a knot once.
+// segment (an overlap both ways), a hit at a knot once; a loop lifted into
+// space that still crosses itself, and one that passes over itself.
 #include "casteljau/ops/intersection.hpp"
 
 #include <gtest/gtest.h>
@@ -222,6 +223,21 @@ TEST(SpaceIntersections, OverlapsAndKnots) {
   EXPECT_NEAR(at_knot[0].a.lower, 1.0, 1e-15);
 }
 
+TEST(SpaceIntersections, SelfIntersectionsOfALoopLiftedIntoSpace) {
+  // The plane loop (0,0) (2,2) (-1,2) (1,0) crosses itself at s = (5 - sqrt 15) / 10
+  // and 1 - s. Lifted by z = t (1 - t), symmetric about 1/2, it still does;
+  // lifted by z = t it passes over itself.
+  const double s = (5 - std::sqrt(15.0)) / 10;
+  const BezierCurve lifted = bezier({{0, 0, 0}, {2, 2, 1.0 / 3}, {-1, 2, 1.0 / 3}, {1, 0, 0}});
+  const auto crossing = self_intersections(lifted, default_intersection_tolerance(lifted, lifted)).value();
+  ASSERT_EQ(crossing.size(), 1u);
+  EXPECT_EQ(crossing[0].kind, IntersectionKind::transversal);
+  EXPECT_NEAR(crossing[0].a.lower, s, 1e-14);
+  EXPECT_NEAR(crossing[0].b.lower, 1 - s, 1e-14);
+  const BezierCurve rising = bezier({{0, 0, 0}, {2, 2, 1.0 / 3}, {-1, 2, 2.0 / 3}, {1, 0, 1}});
+  EXPECT_TRUE(self_intersections(rising, default_intersection_tolerance(rising, rising)).value().empty());
+}
+
 TEST(Intersections, RefuseBadInput) {
   const BezierCurve plane = bezier({{0, 0}, {1, 1}});
   const BezierCurve space = bezier({{0, 0, 0}, {1, 1, 1}});
@@ -231,7 +247,8 @@ TEST(Intersections, RefuseBadInput) {
   EXPECT_EQ(intersections(line, line, Tolerance{1e-9}).error().message,
             "intersections need curves in R^2 or more, the first lives in R^1");
   EXPECT_FALSE(intersections(plane, plane, Tolerance{0.0}));
-  EXPECT_FALSE(self_intersections(space, Tolerance{1e-9}));
+  EXPECT_EQ(self_intersections(line, Tolerance{1e-9}).error().message,
+            "self-intersections need a curve in R^2 or more, this one lives in R^1");
 }
 
 }  // namespace

@@ -92,7 +92,8 @@ Tolerance default_intersection_tolerance(CurveView a, CurveView b);
 /// finite or <= 0.
 Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b, Tolerance tolerance);
 
-/// The self-intersections of a plane curve: pairs of parameters a < b with
+/// The self-intersections of a curve (plane, or in space as above, where the
+/// parts' injectivity is a sufficient half-space test): pairs of parameters a < b with
 /// C(a) = C(b), each once, as intersections of the curve with itself (`a`
 /// and `b` both on it; overlaps where it runs back over itself). Between
 /// different Bézier pieces as `intersections` finds them (the joint of two
@@ -103,7 +104,7 @@ Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b,
 /// two parts of one piece are intersected by subdivision of their boxes and
 /// Newton on C(s) - C(t) = 0, kept when it converges to rounding with
 /// s != t (a cusp, where C' vanishes, is not a self-intersection).
-/// Errors as intersections.
+/// Errors: a curve in R^1, a tolerance not finite or <= 0.
 Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tolerance tolerance);
 
 /// The name of a kind as the CLI's JSON writes it: "transversal", "tangent", "overlap".
