@@ -6,6 +6,7 @@
 
 #include "casteljau/bezier/bernstein.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/core/precondition.hpp"
 #include "../core/workspace.hpp"
 #include "de_casteljau.hpp"
 
@@ -144,7 +145,7 @@ std::vector<Point> derivatives_up_to(const BezierCurve& curve, double t, int max
 }
 
 Point derivative_at(const BezierCurve& curve, double t, int order) {
-  assert(order >= 0);
+  detail::require(order >= 0, "derivative_at", "the derivative order must be >= 0");
   if (!curve.is_rational()) {
     Point p(curve.dimension());
     polynomial_derivative(curve, t, order, p, curve.dimension());
@@ -157,7 +158,8 @@ Point derivative_at(const BezierCurve& curve, double t, int order) {
 
 void derivatives_at(const BezierCurve& curve, std::span<const double> ts, int order, std::span<double> out) {
   const std::size_t d = static_cast<std::size_t>(curve.dimension());
-  assert(order >= 0 && out.size() == ts.size() * d);
+  detail::require(order >= 0, "derivatives_at", "the derivative order must be >= 0");
+  detail::require(out.size() == ts.size() * d, "derivatives_at", "out must hold ts.size() * dimension() values");
   if (order == 0) {
     points_at(curve, ts, out);
     return;

@@ -8,6 +8,7 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bezier/split.hpp"
 #include "casteljau/core/parameter_checks.hpp"
+#include "casteljau/core/precondition.hpp"
 #include "checked_batch.hpp"
 
 namespace casteljau {
@@ -68,7 +69,7 @@ Point derivative_at(const PiecewiseBezierCurve& curve, double u, int order) {
 
 void points_at(const PiecewiseBezierCurve& curve, std::span<const double> us, std::span<double> out) {
   const std::size_t d = curve.dimension();
-  assert(out.size() == us.size() * d);
+  detail::require(out.size() == us.size() * d, "points_at", "out must hold us.size() * dimension() values");
   for (std::size_t k = 0; k < us.size(); ++k) {
     const auto [i, t] = locate(curve, us[k]);
     points_at(curve.pieces()[i], std::span<const double>(&t, 1), out.subspan(k * d, d));
@@ -82,7 +83,8 @@ std::vector<Point> derivatives_up_to(const PiecewiseBezierCurve& curve, double u
 
 std::size_t points_at_within(const PiecewiseBezierCurve& curve, std::span<const double> us, Interval allowed,
                              std::span<double> out) {
-  assert(out.size() == us.size() * static_cast<std::size_t>(curve.dimension()));
+  detail::require(out.size() == us.size() * static_cast<std::size_t>(curve.dimension()), "points_at_within",
+                  "out must hold us.size() * dimension() values");
   return detail::evaluate_within(us, allowed, static_cast<std::size_t>(curve.dimension()), out,
                                  [&](std::span<const double> block, std::span<double> rows) {
                                    points_at(curve, block, rows);
@@ -91,7 +93,8 @@ std::size_t points_at_within(const PiecewiseBezierCurve& curve, std::span<const 
 
 void derivatives_at(const PiecewiseBezierCurve& curve, std::span<const double> us, int order, std::span<double> out) {
   const std::size_t d = curve.dimension();
-  assert(order >= 0 && out.size() == us.size() * d);
+  detail::require(order >= 0, "derivatives_at", "the derivative order must be >= 0");
+  detail::require(out.size() == us.size() * d, "derivatives_at", "out must hold us.size() * dimension() values");
   for (std::size_t k = 0; k < us.size(); ++k) {
     const auto [i, t] = locate(curve, us[k]);
     derivatives_at(curve.pieces()[i], std::span<const double>(&t, 1), order, out.subspan(k * d, d));

@@ -33,6 +33,7 @@
 
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/core/precondition.hpp"
 #include "../core/workspace.hpp"
 #include "checked_batch.hpp"
 #include "de_casteljau.hpp"
@@ -159,7 +160,8 @@ void general_block(const double* rows, int n, int width, bool rational, const do
 
 void points_at(const BezierCurve& curve, std::span<const double> ts, std::span<double> out) {
   const int d = curve.dimension(), n = curve.degree();
-  assert(out.size() == ts.size() * static_cast<std::size_t>(d));
+  detail::require(out.size() == ts.size() * static_cast<std::size_t>(d), "points_at",
+                  "out must hold ts.size() * dimension() values");
   if (ts.empty()) return;
   const bool rational = curve.is_rational();
   const int width = rational ? d + 1 : d;
@@ -215,7 +217,8 @@ void points_at(const BezierCurve& curve, std::span<const double> ts, std::span<d
 
 std::size_t points_at_within(const BezierCurve& curve, std::span<const double> ts, Interval allowed,
                              std::span<double> out) {
-  assert(out.size() == ts.size() * static_cast<std::size_t>(curve.dimension()));
+  detail::require(out.size() == ts.size() * static_cast<std::size_t>(curve.dimension()), "points_at_within",
+                  "out must hold ts.size() * dimension() values");
   return detail::evaluate_within(ts, allowed, static_cast<std::size_t>(curve.dimension()), out,
                                  [&](std::span<const double> block, std::span<double> rows) {
                                    if (!block.empty()) points_at(curve, block, rows);

@@ -7,6 +7,7 @@
 
 #include "casteljau/bezier/bernstein.hpp"
 #include "casteljau/bspline/basis.hpp"
+#include "casteljau/core/precondition.hpp"
 #include "../bezier/de_casteljau.hpp"
 #include "../core/workspace.hpp"
 #include "de_boor.hpp"
@@ -153,7 +154,7 @@ std::vector<Point> derivatives_up_to(const BSplineCurve& curve, double u, int ma
 }
 
 Point derivative_at(const BSplineCurve& curve, double u, int order) {
-  assert(order >= 0);
+  detail::require(order >= 0, "derivative_at", "the derivative order must be >= 0");
   if (order == 0) return point_at(curve, u);
   if (!curve.is_rational() && order > curve.degree()) return Point(static_cast<std::size_t>(curve.dimension()), 0.0);
   return derivatives_up_to(curve, u, order)[static_cast<std::size_t>(order)];

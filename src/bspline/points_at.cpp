@@ -44,6 +44,7 @@
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/core/precondition.hpp"
 #include "../core/workspace.hpp"
 #include "de_boor.hpp"
 #include "../bezier/simd_lanes.hpp"
@@ -592,27 +593,31 @@ std::size_t evaluate_batch(const BSplineCurve& curve, std::span<const double> us
 }  // namespace
 
 void points_at(const BSplineCurve& curve, std::span<const double> us, std::span<double> out) {
-  assert(out.size() == us.size() * static_cast<std::size_t>(curve.dimension()));
+  detail::require(out.size() == us.size() * static_cast<std::size_t>(curve.dimension()), "points_at",
+                  "out must hold us.size() * dimension() values");
   evaluate_batch(curve, us, out.data(), nullptr);
 }
 
 std::size_t points_at_within(const BSplineCurve& curve, std::span<const double> us, Interval allowed,
                              std::span<double> out) {
-  assert(out.size() == us.size() * static_cast<std::size_t>(curve.dimension()));
+  detail::require(out.size() == us.size() * static_cast<std::size_t>(curve.dimension()), "points_at_within",
+                  "out must hold us.size() * dimension() values");
   return evaluate_batch(curve, us, out.data(), nullptr, allowed);
 }
 
 void points_and_derivatives_at(const BSplineCurve& curve, std::span<const double> us, std::span<double> points,
                                std::span<double> derivatives) {
   const std::size_t size = us.size() * static_cast<std::size_t>(curve.dimension());
-  assert(points.size() == size && derivatives.size() == size);
+  detail::require(points.size() == size && derivatives.size() == size, "points_and_derivatives_at",
+                  "points and derivatives must each hold us.size() * dimension() values");
   (void)size;
   evaluate_batch(curve, us, points.data(), derivatives.data());
 }
 
 void derivatives_at(const BSplineCurve& curve, std::span<const double> us, int order, std::span<double> out) {
   const std::size_t d = static_cast<std::size_t>(curve.dimension());
-  assert(order >= 0 && out.size() == us.size() * d);
+  detail::require(order >= 0, "derivatives_at", "the derivative order must be >= 0");
+  detail::require(out.size() == us.size() * d, "derivatives_at", "out must hold us.size() * dimension() values");
   if (order == 0) {
     points_at(curve, us, out);
     return;

@@ -13,6 +13,7 @@
 #include "casteljau/bspline/transform.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/core/vec.hpp"
+#include "casteljau/core/precondition.hpp"
 #include "../core/number_text.hpp"
 #include "construction_support.hpp"
 #include "surface_rows.hpp"
@@ -149,7 +150,7 @@ Point point_at(const CoonsPatch& patch, double u, double v) {
 }
 
 Point partial_derivative_at(const CoonsPatch& patch, double u, double v, int order_u, int order_v) {
-  assert(order_u >= 0 && order_v >= 0);
+  detail::require(order_u >= 0 && order_v >= 0, "partial_derivative_at", "the derivative orders must be >= 0");
   const Corners c = corners_of(patch);
   const Point u0 = curve_derivative(patch.u0(), v, order_v);
   const Point u1 = curve_derivative(patch.u1(), v, order_v);
@@ -187,9 +188,9 @@ Point normal_at(const CoonsPatch& patch, double u, double v) {
 }
 
 void points_at(const CoonsPatch& patch, std::span<const double> us, std::span<const double> vs, std::span<double> out) {
-  assert(us.size() == vs.size());
+  detail::require(us.size() == vs.size(), "points_at", "us and vs must have one size");
   const std::size_t d = static_cast<std::size_t>(patch.dimension());
-  assert(out.size() == us.size() * d);
+  detail::require(out.size() == us.size() * d, "points_at", "out must hold us.size() * dimension() values");
   const Corners c = corners_of(patch);
   Point u0(d), u1(d), v0(d), v1(d);
   for (std::size_t k = 0; k < us.size(); ++k) {

@@ -10,6 +10,7 @@
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/core/vec.hpp"
+#include "casteljau/core/precondition.hpp"
 #include "../bezier/de_casteljau.hpp"
 #include "../core/workspace.hpp"
 #include "surface_basis.hpp"
@@ -322,7 +323,7 @@ Point point_at(const BezierSurface& surface, double u, double v) {
 }
 
 Point partial_derivative_at(const BSplineSurface& surface, double u, double v, int order_u, int order_v) {
-  assert(order_u >= 0 && order_v >= 0);
+  detail::require(order_u >= 0 && order_v >= 0, "partial_derivative_at", "the derivative orders must be >= 0");
   if (!surface.is_rational() && (order_u > surface.degree_u() || order_v > surface.degree_v())) {
     return Point(static_cast<std::size_t>(surface.dimension()), 0.0);
   }
@@ -381,7 +382,8 @@ Point normal_at(const BezierSurface& surface, double u, double v) {
 void points_at(const BSplineSurface& surface, std::span<const double> us, std::span<const double> vs,
                std::span<double> out) {
   const std::size_t d = static_cast<std::size_t>(surface.dimension());
-  assert(us.size() == vs.size() && out.size() == us.size() * d);
+  detail::require(us.size() == vs.size(), "points_at", "us and vs must have one size");
+  detail::require(out.size() == us.size() * d, "points_at", "out must hold us.size() * dimension() values");
   Workspace<2048> scratch;
   for (std::size_t k = 0; k < us.size(); ++k) evaluate_point(surface, us[k], vs[k], out.data() + k * d, scratch);
 }
@@ -389,7 +391,8 @@ void points_at(const BSplineSurface& surface, std::span<const double> us, std::s
 void points_at(const BezierSurface& surface, std::span<const double> us, std::span<const double> vs,
                std::span<double> out) {
   const std::size_t d = static_cast<std::size_t>(surface.dimension());
-  assert(us.size() == vs.size() && out.size() == us.size() * d);
+  detail::require(us.size() == vs.size(), "points_at", "us and vs must have one size");
+  detail::require(out.size() == us.size() * d, "points_at", "out must hold us.size() * dimension() values");
   Workspace<2048> scratch;
   for (std::size_t k = 0; k < us.size(); ++k)
     evaluate_bezier_point(surface, us[k], vs[k], out.data() + k * d, scratch);
@@ -401,7 +404,8 @@ void grid_points_at(const BSplineSurface& surface, std::span<const double> us, s
   const int d = surface.dimension();
   const bool rational = surface.is_rational();
   const std::size_t dd = static_cast<std::size_t>(d);
-  assert(out.size() == us.size() * vs.size() * dd);
+  detail::require(out.size() == us.size() * vs.size() * dd, "grid_points_at",
+                  "out must hold us.size() * vs.size() * dimension() values");
   if (us.empty() || vs.empty()) return;
   const ControlNet& net = surface.control_net();
   const std::size_t columns = net.columns();
