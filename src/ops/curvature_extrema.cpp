@@ -43,19 +43,9 @@ struct Velocity {
 };
 
 Velocity velocity_of(const BezierCurve& piece) {
-  const int d = piece.dimension();
   Velocity v;
-  if (!piece.is_rational()) {
-    for (int i = 0; i < d; ++i) v.p.push_back(derivative(column(piece.control_points(), i)));
-  } else {
-    const PointArray h = homogeneous_points(piece);
-    v.w = column(h, d);
-    const Polynomial dw = derivative(v.w);
-    for (int i = 0; i < d; ++i) {
-      const Polynomial x = column(h, i);
-      v.p.push_back(difference(product(v.w, derivative(x)), product(dw, x)));
-    }
-  }
+  v.p = detail::velocity_numerators(piece);
+  if (piece.is_rational()) v.w = column(homogeneous_points(piece), piece.dimension());
   for (const Polynomial& p : v.p) v.dp.push_back(derivative(p));
   return v;
 }
@@ -173,9 +163,7 @@ Expected<std::vector<CurvatureExtremum>> curvature_extrema(CurveView curve) {
     // The junction with the previous piece, where the curvature is continuous.
     if (k > 0 && !critical[k - 1].signs.empty() && !c.signs.empty()) {
       const int before = critical[k - 1].signs.back(), after = c.signs.front();
-      const double left = curve.dimension() == 2 ? signed_curvature_at(pieces.pieces[k - 1], 1.0)
-                                                 : curvature_at(pieces.pieces[k - 1], 1.0);
-      const double right = curve.dimension() == 2 ? signed_curvature_at(piece, 0.0) : curvature_at(piece, 0.0);
+      const double left = curvature_of(pieces.pieces[k - 1], 1.0), right = curvature_of(piece, 0.0);
       const bool continuous = std::isfinite(left) && std::isfinite(right) &&
                               std::abs(left - right) <= tolerances::kCurvatureContinuity *
                                                             std::max(std::abs(left), std::abs(right));

@@ -270,24 +270,11 @@ void record(const Hit& hit, const BezierCurve& piece_a, Interval span_a, Interva
   (overlap ? overlaps : points).push_back(found);
 }
 
-/// The coefficients of a piece's hodograph, the zero ones left out: C''s
-/// control points, or for a rational piece those of the numerator
-/// A' w - A w' of C' w^2 (the same directions).
+/// The coefficients of a piece's hodograph (detail::velocity_numerators),
+/// the zero ones left out.
 std::vector<Point> hodograph_directions(const BezierCurve& piece) {
   const int d = piece.dimension();
-  std::vector<std::vector<double>> coordinates(d);
-  if (!piece.is_rational()) {
-    for (int j = 0; j < d; ++j) coordinates[j] = derivative(column(piece.control_points(), j));
-  } else {
-    const PointArray h = homogeneous_points(piece);
-    const std::vector<double> w = column(h, d), w1 = derivative(w);
-    for (int j = 0; j < d; ++j) {
-      const std::vector<double> c = column(h, j);
-      std::vector<double> left = bernstein_product(derivative(c), w), right = bernstein_product(c, w1);
-      for (std::size_t i = 0; i < left.size(); ++i) left[i] -= right[i];
-      coordinates[j] = std::move(left);
-    }
-  }
+  const std::vector<std::vector<double>> coordinates = detail::velocity_numerators(piece);
   std::vector<Point> directions;
   for (std::size_t i = 0; i < coordinates[0].size(); ++i) {
     Point v(d);
