@@ -72,7 +72,7 @@ Expected<FitRequest> request_of(const FitOptions& options) {
     request.smoothing = true;
     if (options.smoothing != "gcv") {
       auto lambda = number_option("--smoothing", options.smoothing);
-      if (!lambda) return Error{lambda.error().message + " (give λ >= 0 or gcv)"};
+      if (!lambda) return Error{lambda.error().message + " (give λ >= 0 or gcv)", lambda.error().kind};
       if (*lambda < 0.0) return Error{fmt::format("--smoothing: λ = {} is negative, it must be >= 0 (or gcv)", *lambda)};
       request.lambda = *lambda;
     }
@@ -80,7 +80,7 @@ Expected<FitRequest> request_of(const FitOptions& options) {
   if (given(options.param_option)) {
     if (options.function) return Error{"--function takes x (the first column) as the parameter; --param does not apply"};
     auto kind = parameterization_from_name(options.param);
-    if (!kind) return Error{"--param: " + kind.error().message};
+    if (!kind) return with_context(kind.error(), "--param");
     request.kind = *kind;
   }
   if (request.tolerance && request.control_points != 0) {

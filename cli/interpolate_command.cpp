@@ -152,7 +152,7 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
   Parameterization kind = Parameterization::uniform;
   if (given(options.param_option)) {
     auto parsed = parameterization_from_name(options.param);
-    if (!parsed) return Error{"--param: " + parsed.error().message};
+    if (!parsed) return with_context(parsed.error(), "--param");
     kind = *parsed;
   }
   // Hermite rows carry tangents: the closing duplicate is judged on the
@@ -184,7 +184,7 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
       ends.condition = options.closed ? EndCondition::periodic : EndCondition::not_a_knot;
       if (given(options.end_option)) {
         auto condition = end_condition_from_name(options.end);
-        if (!condition) return Error{"--end: " + condition.error().message};
+        if (!condition) return with_context(condition.error(), "--end");
         ends.condition = *condition;
       }
       if (ends.condition == EndCondition::periodic && !options.closed) {

@@ -96,9 +96,9 @@ Expected<PointArray> subdivide_recursive(const BezierCurve& curve, int depth, do
   if (depth < 0) return Error{"subdivision depth " + std::to_string(depth) + " is negative"};
   if (depth > tolerances::kMaxSubdivisionDepth) {
     return Error{"subdivision depth " + std::to_string(depth) + " would give 2^" + std::to_string(depth) +
-                 " + 1 points, the limit is depth " + std::to_string(tolerances::kMaxSubdivisionDepth)};
+                 " + 1 points, the limit is depth " + std::to_string(tolerances::kMaxSubdivisionDepth), ErrorKind::limit};
   }
-  if (!(t > 0.0 && t < 1.0)) return Error{"subdivision parameter must lie strictly between 0 and 1"};
+  if (!(t > 0.0 && t < 1.0)) return Error{"subdivision parameter must lie strictly between 0 and 1", ErrorKind::out_of_domain};
   const PointArray points = working_points(curve);
   const int width = points.dimension(), n = curve.degree(), d = curve.dimension();
   PointArray out = PointArray::zeros(d, 0);

@@ -23,7 +23,7 @@ Expected<BSplineCurve> BSplineCurve::make(int degree, std::vector<double> knots,
   const std::size_t count = control_points.size();
   if (count > tolerances::kMaxControlPoints) {
     return Error{std::to_string(count) + " control points, above the limit " +
-                 std::to_string(tolerances::kMaxControlPoints)};
+                 std::to_string(tolerances::kMaxControlPoints), ErrorKind::limit};
   }
   if (count < static_cast<std::size_t>(degree) + 1) {
     return Error{std::to_string(count) + " control points, a B-spline of degree " + std::to_string(degree) +

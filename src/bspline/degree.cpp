@@ -60,14 +60,14 @@ Expected<BSplineCurve> elevate_degree(const BSplineCurve& curve, int times) {
   if (times < 0) return Error{"the degree cannot be elevated " + std::to_string(times) + " times, it must be >= 0"};
   if (times > tolerances::kMaxBSplineDegree - p)
     return Error{"elevating degree " + std::to_string(p) + " by " + std::to_string(times) + " is above the limit " +
-                 std::to_string(tolerances::kMaxBSplineDegree)};
+                 std::to_string(tolerances::kMaxBSplineDegree), ErrorKind::limit};
   if (times == 0) return curve;
   const BezierPieces pieces = to_bezier_pieces(curve);
   const int q = p + times;
   const double count = static_cast<double>(pieces.pieces.size()) * (q + 1);
   if (count > static_cast<double>(tolerances::kMaxControlPoints))
     return Error{"elevating to degree " + std::to_string(q) + " would give more than " +
-                 std::to_string(tolerances::kMaxControlPoints) + " control points"};
+                 std::to_string(tolerances::kMaxControlPoints) + " control points", ErrorKind::limit};
   std::vector<BezierCurve> elevated;
   elevated.reserve(pieces.pieces.size());
   for (const BezierCurve& piece : pieces.pieces) elevated.push_back(elevate_degree(piece, times));

@@ -131,7 +131,7 @@ Expected<BSplineCurve> antiderivative_curve(const BSplineCurve& curve, int order
                  std::to_string(tolerances::kMaxBSplineDegree)};
   if (static_cast<std::size_t>(order) > tolerances::kMaxControlPoints - curve.control_points().size())
     return Error{"antiderivative order " + std::to_string(order) + " gives more control points than the limit " +
-                 std::to_string(tolerances::kMaxControlPoints)};
+                 std::to_string(tolerances::kMaxControlPoints), ErrorKind::limit};
   BSplineCurve result = curve;
   for (int k = 0; k < order; ++k) result = integrated(result);
   return result;

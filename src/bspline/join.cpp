@@ -44,7 +44,7 @@ Expected<JoinResult> join(const BSplineCurve& first_input, const BSplineCurve& s
   const std::size_t na = a.control_points().size(), nb = b.control_points().size();
   if (na + nb - 1 > tolerances::kMaxControlPoints)
     return Error{"the joined curve would have more than " + std::to_string(tolerances::kMaxControlPoints) +
-                 " control points"};
+                 " control points", ErrorKind::limit};
 
   // Clamped: the first curve ends at its last control point, the second starts at its first.
   const auto end = a.control_points()[na - 1];

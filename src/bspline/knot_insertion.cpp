@@ -135,11 +135,11 @@ Expected<std::vector<double>> checked_new_knots(const BSplineCurve& curve, std::
     const std::string name = new_knots.size() == 1 ? what : what + " " + std::to_string(i);
     if (auto ok = check_finite(new_knots[i], name); !ok) return ok.error();
     if (!domain.contains(new_knots[i]))
-      return Error{name + " (" + number_text(new_knots[i]) + ") is outside the domain " + domain_text(curve)};
+      return Error{name + " (" + number_text(new_knots[i]) + ") is outside the domain " + domain_text(curve), ErrorKind::out_of_domain};
   }
   if (curve.control_points().size() + new_knots.size() > tolerances::kMaxControlPoints)
     return Error{"inserting " + std::to_string(new_knots.size()) + " knots would give more than " +
-                 std::to_string(tolerances::kMaxControlPoints) + " control points"};
+                 std::to_string(tolerances::kMaxControlPoints) + " control points", ErrorKind::limit};
   std::vector<double> sorted(new_knots.begin(), new_knots.end());
   std::sort(sorted.begin(), sorted.end());
   const int p = curve.degree();
@@ -171,7 +171,7 @@ Expected<BSplineCurve> insert_knot(const BSplineCurve& curve, double u, int time
   if (times < 0) return Error{"a knot cannot be inserted " + std::to_string(times) + " times, the count must be >= 0"};
   if (times > static_cast<int>(tolerances::kMaxControlPoints))
     return Error{"inserting a knot " + std::to_string(times) + " times is above the limit of " +
-                 std::to_string(tolerances::kMaxControlPoints) + " control points"};
+                 std::to_string(tolerances::kMaxControlPoints) + " control points", ErrorKind::limit};
   // Also checked for times = 0, so that a bad u is reported whatever the count.
   const double one[] = {u};
   if (auto ok = checked_new_knots(curve, one, "knot to insert"); !ok) return ok.error();

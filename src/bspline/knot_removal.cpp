@@ -188,7 +188,7 @@ Expected<KnotRemoval> remove_knot(const BSplineCurve& curve, double u, int times
   const Interval domain = curve.domain();
   if (!(domain.lower < u && u < domain.upper))
     return Error{"the knot to remove (" + number_text(u) + ") is not inside the domain [" + number_text(domain.lower) +
-                 ", " + number_text(domain.upper) + "], only interior knots can be removed"};
+                 ", " + number_text(domain.upper) + "], only interior knots can be removed", ErrorKind::out_of_domain};
   const auto knots = curve.knots();
   const int s = detail::multiplicity_count(knots, u);
   if (s == 0) return Error{number_text(u) + " is not a knot of the curve, it cannot be removed"};

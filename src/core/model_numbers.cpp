@@ -17,7 +17,7 @@ Status check_magnitude(double value, bool valid, double limit, const std::string
   if (auto ok = check_finite(value, what); !ok) return ok;
   if (!valid) {
     return Error{what + " is " + number_text(value) + ", outside [" + number_text(-limit) + ", " +
-                 number_text(limit) + "], the range of " + kind};
+                 number_text(limit) + "], the range of " + kind, ErrorKind::limit};
   }
   return {};
 }

@@ -182,7 +182,7 @@ Expected<PointArray> solve_collocation(int degree, std::span<const double> knots
     std::size_t a = 0, b = width;
     while (a < b && e.values[a] == 0.0) ++a;
     while (b > a && e.values[b - 1] == 0.0) --b;
-    if (a == b) return Error{singular_message(static_cast<long>(e.row))};
+    if (a == b) return Error{singular_message(static_cast<long>(e.row)), ErrorKind::singular};
     const std::int64_t index = static_cast<std::int64_t>(e.row);
     lower = std::max(lower, index - (e.first + static_cast<std::int64_t>(a)));
     upper = std::max(upper, e.first + static_cast<std::int64_t>(b) - 1 - index);
@@ -228,9 +228,9 @@ Expected<PointArray> solve_collocation(int degree, std::span<const double> knots
                   rhs.begin() + static_cast<std::ptrdiff_t>(row * d));
     }
   }
-  if (const long bad = system.factor(); bad >= 0) return Error{singular_message(bad)};
+  if (const long bad = system.factor(); bad >= 0) return Error{singular_message(bad), ErrorKind::singular};
   system.solve(rhs, d);
-  if (!all_finite(rhs)) return Error{singular_message(-1)};
+  if (!all_finite(rhs)) return Error{singular_message(-1), ErrorKind::singular};
   return PointArray::from_trusted(static_cast<int>(d), std::move(rhs));
 }
 
@@ -268,7 +268,7 @@ Expected<PointArray> solve_periodic_collocation(int degree, std::span<const doub
       }
     }
   }
-  if (const long bad = system.factor(); bad >= 0) return Error{singular_message(bad)};
+  if (const long bad = system.factor(); bad >= 0) return Error{singular_message(bad), ErrorKind::singular};
   // Woodbury: A = B + U V^T, one column of U per distinct corner column c_k
   // (its corner entries), V^T x = x[c_k]. x = Y - Z (I + V^T Z)^{-1} V^T Y
   // with B Y = b and B Z = U.
@@ -289,7 +289,7 @@ Expected<PointArray> solve_periodic_collocation(int degree, std::span<const doub
       for (std::size_t l = 0; l < rank; ++l) capacitance[k * rank + l] = (k == l ? 1.0 : 0.0) + z[columns[k] * rank + l];
       for (std::size_t j = 0; j < d; ++j) w[k * d + j] = rhs[columns[k] * d + j];
     }
-    if (!solve_dense(capacitance, w, rank, d)) return Error{singular_message(-1)};
+    if (!solve_dense(capacitance, w, rank, d)) return Error{singular_message(-1), ErrorKind::singular};
     for (std::size_t i = 0; i < m; ++i)
       for (std::size_t k = 0; k < rank; ++k) {
         const double zik = z[i * rank + k];
@@ -297,7 +297,7 @@ Expected<PointArray> solve_periodic_collocation(int degree, std::span<const doub
         for (std::size_t j = 0; j < d; ++j) rhs[i * d + j] -= zik * w[k * d + j];
       }
   }
-  if (!all_finite(rhs)) return Error{singular_message(-1)};
+  if (!all_finite(rhs)) return Error{singular_message(-1), ErrorKind::singular};
   // Undo the shift: unknown c' is the control point of original column c' + s.
   std::vector<double> result(m * d);
   for (std::size_t c = 0; c < m; ++c) {

@@ -480,7 +480,7 @@ Error smoothing_singular_error(const FitSystem& system, double lambda, std::size
                " (heavily smoothed, towards a straight line) is the range GCV searches here (λ₀·10^-" +
                rounded_text(tolerances::kGcvSearchDecadesBelow) + " to λ₀·10^" +
                rounded_text(tolerances::kGcvSearchDecadesAbove) + ", λ₀ = tr(BᵀB)/tr(Ω) = " + rounded_text(scale) +
-               "): give a λ there, or let GCV choose it"};
+               "): give a λ there, or let GCV choose it", ErrorKind::singular};
 }
 
 // --- GCV search ----------------------------------------------------------------------
@@ -690,7 +690,7 @@ Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const dou
   } else {
     GcvProgress evaluations(progress, grid_steps() + 1);
     const auto chosen = gcv_smoothing(system, points.size(), evaluations);
-    if (!chosen) return Error{"GCV cannot choose λ: the fit's normal equations are singular for every λ tried"};
+    if (!chosen) return Error{"GCV cannot choose λ: the fit's normal equations are singular for every λ tried", ErrorKind::singular};
     lambda = *chosen;
     from_gcv = true;
   }

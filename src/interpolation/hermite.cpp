@@ -105,7 +105,7 @@ Expected<BSplineCurve> interpolate_hermite(const PointArray& points, const Point
                    " overflows (tangents times parameter steps too large)"};
   if (coordinates.size() / ud > tolerances::kMaxControlPoints)
     return Error{"Hermite interpolation of " + std::to_string(count) + " points needs more than " +
-                 std::to_string(tolerances::kMaxControlPoints) + " control points"};
+                 std::to_string(tolerances::kMaxControlPoints) + " control points", ErrorKind::limit};
   return BSplineCurve::from_trusted(3, std::move(knots), PointArray::from_trusted(d, std::move(coordinates)));
 }
 

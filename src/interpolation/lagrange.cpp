@@ -84,7 +84,7 @@ Expected<std::vector<double>> chebyshev_parameters(std::size_t count, Interval d
   if (count < 2) return Error{"Chebyshev parameters need a count of at least 2, got " + std::to_string(count)};
   if (count > kMaxNodes)
     return Error{"Chebyshev parameters: count " + std::to_string(count) + " is above the limit of " +
-                 std::to_string(kMaxNodes)};
+                 std::to_string(kMaxNodes), ErrorKind::limit};
   if (!std::isfinite(domain.lower) || !std::isfinite(domain.upper) || !(domain.lower < domain.upper))
     return Error{"Chebyshev parameters need a finite interval with lower < upper, got [" +
                  detail::number_text(domain.lower) + ", " + detail::number_text(domain.upper) + "]"};
@@ -104,7 +104,7 @@ Expected<BarycentricInterpolant> interpolate_lagrange(const PointArray& points, 
   if (count < 2) return Error{"Lagrange interpolation needs at least 2 points, got " + std::to_string(count)};
   if (count > kMaxNodes)
     return Error{"Lagrange interpolation of " + std::to_string(count) + " points is above the limit of " +
-                 std::to_string(kMaxNodes) + " (degree " + std::to_string(tolerances::kMaxLagrangeDegree) + ")"};
+                 std::to_string(kMaxNodes) + " (degree " + std::to_string(tolerances::kMaxLagrangeDegree) + ")", ErrorKind::limit};
   if (parameters.size() != count)
     return Error{"Lagrange interpolation needs one parameter per point: " + std::to_string(count) + " points, " +
                  std::to_string(parameters.size()) + " parameters"};

@@ -136,20 +136,20 @@ Error field_error(const TableContext& table, std::size_t line, std::size_t index
   if (read_field(text).kind == FieldKind::decimal_comma) {
     return Error{fmt::format("{}: {} uses ',' as the decimal mark; casteljau reads '.' as the decimal mark, and ',', "
                              "';' or tabs between values (convert with: sed 's/,/./g')",
-                             location, in_quotes(text))};
+                             location, in_quotes(text)), ErrorKind::parse};
   }
   if (const char other = other_separator(text, table.separator); other != 0 && other != ',') {
     return Error{fmt::format("{}: {} is not a number; values are separated by {} on line {}, and this line has {} "
                              "(one separator for the whole file: ',', ';' or tabs)",
                              location, in_quotes(text), separator_name(table.separator), table.first_row_line,
-                             separator_name(other))};
+                             separator_name(other)), ErrorKind::parse};
   }
   if (is_blank_separated(text)) {
     return Error{fmt::format("{}: {} holds numbers separated by spaces; casteljau reads ',', ';' or tabs between "
                              "values (convert with: sed -E 's/ +/,/g')",
-                             location, in_quotes(text))};
+                             location, in_quotes(text)), ErrorKind::parse};
   }
-  return Error{location + ": " + parse_number(text).error().message};
+  return with_context(parse_number(text).error(), location);
 }
 
 /// The shared reader behind points and number columns. `what` names the rows
@@ -195,12 +195,12 @@ Expected<Table> parse_table(std::string_view text, const std::string& source, st
       return Error{fmt::format("{}: {} field{}, but {} line {} has {} (every row must have the same number of "
                                "fields){}",
                                where(source, line), count, count == 1 ? "" : "s",
-                               has_header ? "the header on" : "the first row on", first_row_line, table.width, hint)};
+                               has_header ? "the header on" : "the first row on", first_row_line, table.width, hint), ErrorKind::parse};
     }
     const std::size_t row_start = table.values.size();
     if (row_start + count > tolerances::kMaxInputValues) {
       return Error{fmt::format("{}: more than {} numbers, the limit for one file", where(source, line),
-                               tolerances::kMaxInputValues)};
+                               tolerances::kMaxInputValues), ErrorKind::limit};
     }
     // One pass over the fields, values straight into the table: no per-row
     // copies, so memory stays 8 bytes per number whatever the row's width.
@@ -237,22 +237,22 @@ Expected<Table> parse_table(std::string_view text, const std::string& source, st
       if (numbers == 0) {
         // A header: column names, none of them a number.
         has_header = true;
-        if (first_empty != 0) return Error{where(source, line, first_empty) + ": empty column name in the header row"};
+        if (first_empty != 0) return Error{where(source, line, first_empty) + ": empty column name in the header row", ErrorKind::parse};
         table.values.resize(row_start);
         continue;
       }
     }
     if (first_bad != 0) return field_error({source, separator, first_row_line}, line, first_bad, first_bad_text);
     if (rows == max_rows) {
-      return Error{fmt::format("{}: more than {} {}, the limit for one file", where(source, line), max_rows, what)};
+      return Error{fmt::format("{}: more than {} {}, the limit for one file", where(source, line), max_rows, what), ErrorKind::limit};
     }
     ++rows;
     if (keep_lines) table.lines.push_back(line);
   }
   if (rows == 0) {
     if (has_header)
-      return Error{fmt::format("{}: no {} after the header row on line {}", source, what, first_row_line)};
-    return Error{fmt::format("{}: no {} (only comments and blank lines)", source, what)};
+      return Error{fmt::format("{}: no {} after the header row on line {}", source, what, first_row_line), ErrorKind::parse};
+    return Error{fmt::format("{}: no {} (only comments and blank lines)", source, what), ErrorKind::parse};
   }
   return table;
 }
@@ -277,15 +277,15 @@ Expected<double> parse_number(std::string_view text) {
   if (field.kind == FieldKind::number) return field.value;
   switch (field.kind) {
     case FieldKind::empty:
-      return Error{"the value is empty, expected a number"};
+      return Error{"the value is empty, expected a number", ErrorKind::parse};
     case FieldKind::nan:
-      return Error{in_quotes(text) + " is NaN, numbers must be finite"};
+      return Error{in_quotes(text) + " is NaN, numbers must be finite", ErrorKind::parse};
     case FieldKind::infinite:
-      return Error{in_quotes(text) + " is infinite, numbers must be finite"};
+      return Error{in_quotes(text) + " is infinite, numbers must be finite", ErrorKind::parse};
     case FieldKind::overflow:
-      return Error{in_quotes(text) + " overflows to infinity, numbers must be finite"};
+      return Error{in_quotes(text) + " overflows to infinity, numbers must be finite", ErrorKind::parse};
     default:
-      return Error{in_quotes(text) + " is not a number"};
+      return Error{in_quotes(text) + " is not a number", ErrorKind::parse};
   }
 }
 
@@ -318,7 +318,7 @@ Expected<NumberColumn> parse_numbers_csv(std::string_view text, const std::strin
   if (!table) return table.error();
   if (table->width != 1) {
     return Error{
-        fmt::format("{}: {} fields, expected one number per line", where(source, table->lines.front()), table->width)};
+        fmt::format("{}: {} fields, expected one number per line", where(source, table->lines.front()), table->width), ErrorKind::parse};
   }
   return NumberColumn{std::move(table->values), std::move(table->lines)};
 }

@@ -108,16 +108,16 @@ std::string display_name(const fs::path& path) { return io_detail::printable(pat
 
 Expected<std::string> read_text_file(const fs::path& path) {
   const int raw = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (raw < 0) return Error{"cannot open " + in_quotes(path) + ": " + errno_text(errno)};
+  if (raw < 0) return Error{"cannot open " + in_quotes(path) + ": " + errno_text(errno), ErrorKind::io};
   FileDescriptor fd(raw);
   struct stat info {};
-  if (::fstat(fd.get(), &info) != 0) return Error{"cannot read " + in_quotes(path) + ": " + errno_text(errno)};
-  if (S_ISDIR(info.st_mode)) return Error{in_quotes(path) + " is a directory, not a file"};
+  if (::fstat(fd.get(), &info) != 0) return Error{"cannot read " + in_quotes(path) + ": " + errno_text(errno), ErrorKind::io};
+  if (S_ISDIR(info.st_mode)) return Error{in_quotes(path) + " is a directory, not a file", ErrorKind::io};
   std::string text;
   if (S_ISREG(info.st_mode)) {
     const auto size = static_cast<std::uintmax_t>(info.st_size);
     if (size > tolerances::kMaxInputFileBytes) {
-      return Error{in_quotes(path) + " is " + size_text(size) + ", larger than the 1 GiB limit for input files"};
+      return Error{in_quotes(path) + " is " + size_text(size) + ", larger than the 1 GiB limit for input files", ErrorKind::limit};
     }
     text.reserve(static_cast<std::size_t>(size));
   }
@@ -128,11 +128,11 @@ Expected<std::string> read_text_file(const fs::path& path) {
     const ssize_t got = ::read(fd.get(), chunk.data(), chunk.size());
     if (got < 0) {
       if (errno == EINTR) continue;
-      return Error{"cannot read " + in_quotes(path) + ": " + errno_text(errno)};
+      return Error{"cannot read " + in_quotes(path) + ": " + errno_text(errno), ErrorKind::io};
     }
     if (got == 0) break;
     if (text.size() + static_cast<std::size_t>(got) > tolerances::kMaxInputFileBytes) {
-      return Error{in_quotes(path) + " is larger than the 1 GiB limit for input files"};
+      return Error{in_quotes(path) + " is larger than the 1 GiB limit for input files", ErrorKind::limit};
     }
     text.append(chunk.data(), static_cast<std::size_t>(got));
   }
@@ -155,8 +155,8 @@ bool same_regular_file(const fs::path& a, const fs::path& b) {
 
 Status write_file_atomically(const fs::path& path, std::string_view contents) {
   const Error cannot_write{"cannot write " + in_quotes(path)};
-  auto failed = [&](int error) { return Error{cannot_write.message + ": " + errno_text(error)}; };
-  if (path.empty()) return Error{"cannot write '': the file name is empty"};
+  auto failed = [&](int error) { return Error{cannot_write.message + ": " + errno_text(error), ErrorKind::io}; };
+  if (path.empty()) return Error{"cannot write '': the file name is empty", ErrorKind::io};
 
   // What the path names once links are followed (stat follows them all,
   // /dev/stdout's /proc links included): a FIFO or a device is written in
@@ -164,7 +164,7 @@ Status write_file_atomically(const fs::path& path, std::string_view contents) {
   struct stat existing {};
   bool exists = ::stat(path.c_str(), &existing) == 0;
   if (!exists && errno != ENOENT) return failed(errno);  // ELOOP, ENOTDIR, EACCES...
-  if (exists && S_ISDIR(existing.st_mode)) return Error{in_quotes(path) + " is a directory, not a file"};
+  if (exists && S_ISDIR(existing.st_mode)) return Error{in_quotes(path) + " is a directory, not a file", ErrorKind::io};
   if (exists && !S_ISREG(existing.st_mode)) return write_in_place(path, contents, failed);
 
   fs::path target = path;

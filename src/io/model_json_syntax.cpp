@@ -177,15 +177,15 @@ Expected<json> parse_json_document(std::string_view text, const std::string& sou
   } catch (const json::exception& error) {
     // sax_parse reports through parse_error(); this is only a safety net so
     // that no exception leaves the library.
-    return Error{source + ": " + printable(error.what(), 200)};
+    return Error{source + ": " + printable(error.what(), 200), ErrorKind::parse};
   }
   if (!parsed) {
-    if (!builder.failure) return Error{source + ": the JSON text could not be parsed"};
+    if (!builder.failure) return Error{source + ": the JSON text could not be parsed", ErrorKind::parse};
     const SyntaxFailure& failure = *builder.failure;
     std::string where = source;
     if (failure.offset != std::string_view::npos) where += ", " + line_and_column(text, failure.offset);
     if (!failure.path.empty()) where += ", " + failure.path;
-    return Error{where + ": " + failure.what};
+    return Error{where + ": " + failure.what, ErrorKind::parse};
   }
   return std::move(builder.root);
 }

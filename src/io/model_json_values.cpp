@@ -45,7 +45,7 @@ std::string describe(const json& value) {
 }
 
 Error JsonReader::at(const std::string& path, const std::string& what) const {
-  return Error{source_ + ", " + (path.empty() ? std::string("the top level") : path) + ": " + what};
+  return Error{source_ + ", " + (path.empty() ? std::string("the top level") : path) + ": " + what, ErrorKind::parse};
 }
 
 namespace {

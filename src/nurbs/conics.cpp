@@ -40,7 +40,7 @@ std::pair<double, double> cos_sin(double angle) {
 /// A radius or semi-axis: finite, > 0 and a valid coordinate (at most
 /// tolerances::kMaxCoordinate).
 Status check_positive(double value, const char* what) {
-  if (auto ok = check_finite(value, what); !ok) return Error{ok.error().message + ", it must be finite and > 0"};
+  if (auto ok = check_finite(value, what); !ok) return Error{ok.error().message + ", it must be finite and > 0", ok.error().kind};
   if (!(value > 0.0)) {
     return Error{std::string(what) + " is " + number_text(value) + ", it must be finite and > 0"};
   }
@@ -146,7 +146,7 @@ Expected<BSplineCurve> elliptic_arc(const ConicFrame& frame, double a, double b,
   // lie at distance r / cos(dθ/2) <= r √2 from the centre, and can leave it.
   PointArray points = PointArray::from_trusted(static_cast<int>(frame.center.size()), std::move(coordinates));
   if (auto ok = check_coordinates(points, "control point"); !ok) {
-    return Error{"the conic reaches outside the range of coordinates: " + ok.error().message};
+    return with_context(ok.error(), "the conic reaches outside the range of coordinates");
   }
   return BSplineCurve::make(2, std::move(knots), std::move(points), std::move(weights));
 }

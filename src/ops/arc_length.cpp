@@ -197,7 +197,7 @@ class Quadrature {
       }
       if ((intervals_ += 2) > tolerances::kMaxArcLengthIntervals)
         return Error{"the arc length needs more than " + std::to_string(tolerances::kMaxArcLengthIntervals) +
-                     " quadrature intervals at this tolerance; ask for a larger one"};
+                     " quadrature intervals at this tolerance; ask for a larger one", ErrorKind::limit};
       const Part left = rule(speed, part.a, centre, 0.5 * part.tolerance);
       const Part right = rule(speed, centre, part.b, 0.5 * part.tolerance);
       if (std::abs(left.kronrod + right.kronrod - part.kronrod) <= part.tolerance) {
@@ -257,7 +257,7 @@ Status check_range(CurveView curve, Interval range) {
     if (auto ok = check_finite(value, std::string("the arc-length range's ") + name); !ok) return ok;
     if (!domain.contains(value))
       return Error{std::string("the arc-length range's ") + name + " " + number_text(value) +
-                   " is outside the domain [" + number_text(domain.lower) + ", " + number_text(domain.upper) + "]"};
+                   " is outside the domain [" + number_text(domain.lower) + ", " + number_text(domain.upper) + "]", ErrorKind::out_of_domain};
   }
   if (range.lower > range.upper)
     return Error{"the arc-length range [" + number_text(range.lower) + ", " + number_text(range.upper) +
@@ -349,7 +349,7 @@ Expected<double> parameter_at_length(CurveView curve, double length, Tolerance t
   if (!sums) return sums.error();
   if (length < 0.0 || length > sums->total + tolerance.distance)
     return Error{"the length " + number_text(length) + " is outside [0, " + number_text(sums->total) +
-                 "], the curve's length"};
+                 "], the curve's length", ErrorKind::out_of_domain};
   if (length >= sums->total) return curve.domain().upper;
   return solve_for_length(quadrature, *sums, length, tolerance.distance);
 }

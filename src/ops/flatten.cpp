@@ -420,7 +420,7 @@ double furthest_step(const Deviation& deviation, double a, double guess, double 
 
 Error too_many_segments(long max_segments) {
   return Error{"flattening needs more than " + std::to_string(max_segments) +
-               " segments at this tolerance (tolerance too small for the curve's size)"};
+               " segments at this tolerance (tolerance too small for the curve's size)", ErrorKind::limit};
 }
 
 Error cannot_certify(double t) {

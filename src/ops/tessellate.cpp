@@ -115,7 +115,7 @@ Status check_estimate(const CellEstimate& estimate, double tolerance) {
     message += "; the surfaces have " + std::to_string(estimate.roots()) +
                " knot spans, too many to fit at any tolerance";
   }
-  return Error{message};
+  return Error{message, ErrorKind::limit};
 }
 
 /// A patch of the assembled mesh none of whose triangles has an area: the

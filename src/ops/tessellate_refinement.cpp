@@ -28,7 +28,7 @@ double turn(const Vec3& a, const Vec3& b) {
 Status check_cell_count(std::size_t cells, double tolerance) {
   if (2 * cells > tolerances::kMaxMeshTriangles) {
     return Error{"the tessellation needs more than " + std::to_string(tolerances::kMaxMeshTriangles) +
-                 " triangles at tolerance " + detail::number_text(tolerance) + "; use a larger tolerance"};
+                 " triangles at tolerance " + detail::number_text(tolerance) + "; use a larger tolerance", ErrorKind::limit};
   }
   return {};
 }

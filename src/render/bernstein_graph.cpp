@@ -105,7 +105,7 @@ Expected<std::vector<Vec2>> bernstein_graph_polyline(int n, int k, Tolerance tol
       return Error{fmt::format("cannot certify a segment of B_{{{},{}}} from t = {} in double precision", n, k, a)};
     if (static_cast<long>(points.size()) > tolerances::kMaxFlattenSegments)
       return Error{fmt::format("drawing B_{{{},{}}} needs more than {} segments at this tolerance", n, k,
-                               tolerances::kMaxFlattenSegments)};
+                               tolerances::kMaxFlattenSegments), ErrorKind::limit};
     points.push_back(end);
     a = end[0], fa = end[1];
     guess = certified;

@@ -109,7 +109,7 @@ Status add_bspline(Panel& panel, const BSplineCurve& curve, const BSplinePlotOpt
   const Interval domain = curve.domain();
   if (options.construction && !domain.contains(*options.construction))
     return Error{fmt::format("the de Boor construction parameter {} is outside the domain [{}, {}]",
-                             *options.construction, domain.lower, domain.upper)};
+                             *options.construction, domain.lower, domain.upper), ErrorKind::out_of_domain};
   const bool graph = curve.dimension() == 1;
   if (!graph && curve.degree() == 0) {
     // A plane B-spline of degree 0 takes the value P_i on the whole span i: a set of points.
@@ -205,7 +205,7 @@ Expected<Panel> bspline_basis_panel(std::span<const double> knots, int degree) {
                              knots.size())};
   const std::size_t count = knots.size() - static_cast<std::size_t>(degree) - 1;
   if (count > static_cast<std::size_t>(tolerances::kMaxPlottedBasisDegree) + 1)
-    return Error{fmt::format("{} basis functions are too many to plot (at most {})", count, tolerances::kMaxPlottedBasisDegree + 1)};
+    return Error{fmt::format("{} basis functions are too many to plot (at most {})", count, tolerances::kMaxPlottedBasisDegree + 1), ErrorKind::limit};
   if (auto ok = validate_knots(knots, degree, count); !ok) return ok.error();
   Panel panel;
   panel.x.label = "u";

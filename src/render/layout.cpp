@@ -352,7 +352,7 @@ Status check_drawable(const PanelFrame& f) {
   for (const auto& [lower, upper, axis] : {std::tuple{f.x_lower, f.x_upper, "x"}, std::tuple{f.y_lower, f.y_upper, "y"}})
     if (!(std::isfinite(upper - lower) && upper - lower > 0.0))
       return Error{fmt::format("the data spans {} from {:g} to {:g}, too wide to draw (the width overflows a double)",
-                               axis, lower, upper)};
+                               axis, lower, upper), ErrorKind::limit};
   return {};
 }
 
@@ -745,7 +745,7 @@ Status check_plotted_degree(int degree) {
   return Error{fmt::format("a curve of degree {} is beyond what a figure draws (at most degree {}: certifying the "
                            "drawing costs O(n^2) per segment, seconds at degree 1000, minutes near 10,000); "
                            "eval --samples gives its points",
-                           degree, tolerances::kMaxPlottedCurveDegree)};
+                           degree, tolerances::kMaxPlottedCurveDegree), ErrorKind::limit};
 }
 
 Tolerance drawing_tolerance(const PanelFrame& frame, double fallback) {

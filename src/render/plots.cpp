@@ -148,7 +148,7 @@ Expected<Panel> bernstein_basis_panel(int n, bool without_ends) {
   if (n < 1) return Error{fmt::format("the degree of the Bernstein basis must be >= 1, got {}", n)};
   if (n > tolerances::kMaxPlottedBasisDegree)
     return Error{fmt::format("the degree of the Bernstein basis must be <= {} to be plotted, got {}",
-                             tolerances::kMaxPlottedBasisDegree, n)};
+                             tolerances::kMaxPlottedBasisDegree, n), ErrorKind::limit};
   if (without_ends && n < 2)
     return Error{fmt::format("without k = 0 and k = n nothing is left of the basis of degree {}", n)};
   Panel panel;
@@ -218,9 +218,9 @@ Status check_plottable(const PlaneBox& box, const std::string& subject) {
   if (axis == 2)
     return Error{fmt::format("{} x from {:g} to {:g} and y from {:g} to {:g}, too wide to plot (a figure shows a "
                              "diagonal of at most {:.2g})",
-                             subject, box.lower[0], box.upper[0], box.lower[1], box.upper[1], tolerances::kMaxPlottedWidth)};
+                             subject, box.lower[0], box.upper[0], box.lower[1], box.upper[1], tolerances::kMaxPlottedWidth), ErrorKind::limit};
   return Error{fmt::format("{} {} from {:g} to {:g}, too wide to plot (a figure shows a width of at most {:.2g})",
-                           subject, axis == 0 ? "x" : "y", box.lower[axis], box.upper[axis], tolerances::kMaxPlottedWidth)};
+                           subject, axis == 0 ? "x" : "y", box.lower[axis], box.upper[axis], tolerances::kMaxPlottedWidth), ErrorKind::limit};
 }
 
 }  // namespace
@@ -242,7 +242,7 @@ void name_curves(Panel& panel, std::size_t first, const std::string& name) {
 Status check_construction_domain(double t, Interval domain, const std::string& name) {
   if (domain.contains(t)) return {};
   return Error{fmt::format("--construction {} is outside the domain [{}, {}] of {}", t, domain.lower, domain.upper,
-                           name)};
+                           name), ErrorKind::out_of_domain};
 }
 
 /// An error for a construction asked of a curve beyond kMaxConstructionDegree.
@@ -251,7 +251,7 @@ Status check_construction_degree(int degree, const std::string& name) {
   const long long n = degree;
   return Error{fmt::format("--construction: {} has degree {}, whose construction is {} segments, too many to show "
                            "(at most degree {})",
-                           name, degree, n * (n + 1) / 2, tolerances::kMaxConstructionDegree)};
+                           name, degree, n * (n + 1) / 2, tolerances::kMaxConstructionDegree), ErrorKind::limit};
 }
 
 }  // namespace

@@ -39,10 +39,10 @@ Expected<FigureFormat> figure_format_of(const std::filesystem::path& path) {
   if (extension == ".pdf") return FigureFormat::pdf;
   if (extension.empty()) {
     return Error{fmt::format("cannot write '{}': the file name has no extension (use .svg, .png or .pdf)",
-                             display_name(path))};
+                             display_name(path)), ErrorKind::io};
   }
   return Error{fmt::format("cannot write '{}': unknown figure format '{}' (use .svg, .png or .pdf)",
-                           display_name(path), display_name(extension))};
+                           display_name(path), display_name(extension)), ErrorKind::io};
 }
 
 Expected<std::string> figure_document(const Figure& figure, FigureFormat format, Progress progress) {

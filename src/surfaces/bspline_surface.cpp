@@ -68,10 +68,10 @@ Expected<BSplineSurface> BSplineSurface::make(int degree_u, int degree_v, std::v
   }
   if (auto ok = detail::check_net_coordinates(net); !ok) return ok.error();
   if (auto ok = validate_knots(knots_u, degree_u, net.rows()); !ok) {
-    return Error{"knots_u: " + ok.error().message};
+    return with_context(ok.error(), "knots_u");
   }
   if (auto ok = validate_knots(knots_v, degree_v, net.columns()); !ok) {
-    return Error{"knots_v: " + ok.error().message};
+    return with_context(ok.error(), "knots_v");
   }
   if (auto ok = detail::check_surface_weights(weights, net); !ok) return ok.error();
   return BSplineSurface(degree_u, degree_v, std::move(knots_u), std::move(knots_v), std::move(net),

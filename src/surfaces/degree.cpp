@@ -16,7 +16,7 @@ Expected<BSplineSurface> elevate_degree(const BSplineSurface& surface, Direction
   if (times < 0) return Error{where + "cannot elevate the degree " + std::to_string(times) + " times, times must be >= 0"};
   if (times == 0) return surface;
   auto curve = elevate_degree(detail::wide_curve(surface, direction), times);
-  if (!curve) return Error{where + curve.error().message};
+  if (!curve) return Error{where + curve.error().message, curve.error().kind};
   const std::size_t other = direction == Direction::u ? surface.control_net().columns() : surface.control_net().rows();
   if (auto ok = detail::check_net_size(curve->control_points().size(), other); !ok) return ok.error();
   return detail::surface_from_wide(*curve, direction, surface);

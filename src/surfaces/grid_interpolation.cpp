@@ -66,7 +66,7 @@ Expected<BSplineSurface> interpolate_grid(const ControlNet& points, int degree_u
                                                         std::vector<double>(points.points().coordinates().begin(),
                                                                             points.points().coordinates().end()));
   auto along_u = interpolate_bspline(grid_rows, parameters->u, degree_u);
-  if (!along_u) return Error{"interpolating the columns: " + along_u.error().message};
+  if (!along_u) return with_context(along_u.error(), "interpolating the columns");
   const std::size_t net_rows = along_u->control_points().size();
 
   // Along v: column l of R (R_0l..R_{n'}l) is one wide point.
@@ -78,7 +78,7 @@ Expected<BSplineSurface> interpolate_grid(const ControlNet& points, int degree_u
   }
   auto along_v = interpolate_bspline(PointArray::from_trusted(static_cast<int>(net_rows * d), std::move(transposed_r)),
                                      parameters->v, degree_v);
-  if (!along_v) return Error{"interpolating the rows: " + along_v.error().message};
+  if (!along_v) return with_context(along_v.error(), "interpolating the rows");
   const std::size_t net_columns = along_v->control_points().size();
   std::vector<double> coordinates(net_rows * net_columns * d);
   for (std::size_t j = 0; j < net_columns; ++j) {

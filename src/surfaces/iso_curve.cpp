@@ -20,7 +20,7 @@ Status check_value(double value, Interval domain, Direction fixed) {
   if (auto ok = check_finite(value, name); !ok) return ok;
   if (!domain.contains(value)) {
     return Error{name + " = " + detail::number_text(value) + " is outside the domain [" +
-                 detail::number_text(domain.lower) + ", " + detail::number_text(domain.upper) + "]"};
+                 detail::number_text(domain.lower) + ", " + detail::number_text(domain.upper) + "]", ErrorKind::out_of_domain};
   }
   return {};
 }

@@ -11,7 +11,7 @@ namespace casteljau {
 namespace {
 
 Expected<BSplineSurface> rebuilt(Expected<BSplineCurve> curve, const BSplineSurface& surface, Direction direction) {
-  if (!curve) return Error{std::string("direction ") + detail::direction_name(direction) + ": " + curve.error().message};
+  if (!curve) return with_context(curve.error(), std::string("direction ") + detail::direction_name(direction));
   const std::size_t other = direction == Direction::u ? surface.control_net().columns() : surface.control_net().rows();
   if (auto ok = detail::check_net_size(curve->control_points().size(), other); !ok) return ok.error();
   return detail::surface_from_wide(*curve, direction, surface);

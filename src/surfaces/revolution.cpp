@@ -60,7 +60,7 @@ Expected<Vec3> checked_direction(std::span<const double> direction, const char* 
 }
 
 Status check_radius(double radius, const char* what) {
-  if (auto ok = check_finite(radius, what); !ok) return Error{ok.error().message + ", it must be finite and > 0"};
+  if (auto ok = check_finite(radius, what); !ok) return Error{ok.error().message + ", it must be finite and > 0", ok.error().kind};
   if (!(radius > 0.0)) return Error{std::string(what) + " is " + number_text(radius) + ", it must be finite and > 0"};
   return {};
 }

@@ -67,7 +67,7 @@ Expected<BSplineSurface> skin(std::span<const BSplineCurve> sections, int degree
     wide.push_back(polygon.coordinates());
   }
   auto curve = interpolate_bspline(wide, *parameters, degree_v);
-  if (!curve) return Error{"skinning: " + curve.error().message};
+  if (!curve) return with_context(curve.error(), "skinning");
 
   const BSplineCurve& first = (*compatible)[0];
   const std::size_t rows = first.control_points().size();

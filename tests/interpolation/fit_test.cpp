@@ -566,7 +566,9 @@ TEST(FitSmoothing, ALambdaThatMakesTheSystemSingularIsCalledTooLargeOrTooSmall) 
             std::string::npos)
       << large;
   EXPECT_NE(large.find("): give a λ there, or let GCV choose it"), std::string::npos) << large;
+  EXPECT_EQ(fit_smoothing(points, t, options).error().kind, ErrorKind::singular);
   options.smoothing = 1e-308;
+  EXPECT_EQ(fit_smoothing(points, t, options).error().kind, ErrorKind::singular);
   const std::string small = error_of(fit_smoothing(points, t, options));
   EXPECT_EQ(small.find("the smoothing λ = 1e-308 is too small for these data: λ·tr(Ω) is about 10^"), 0u) << small;
   EXPECT_NE(small.find("too little to determine 82 control points from 80 points"), std::string::npos) << small;

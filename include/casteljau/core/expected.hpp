@@ -26,10 +26,36 @@
 
 namespace casteljau {
 
+/// What kind of refusal an Error is, for callers that branch on it (the
+/// message stays the thing to show). Every error has exactly one kind.
+enum class ErrorKind {
+  invalid_argument,  ///< a value or shape the operation does not accept (the default)
+  out_of_domain,     ///< a parameter outside the curve's or surface's domain
+  parse,             ///< text that is not a valid CSV table, model JSON, number...
+  io,                ///< a file that cannot be opened, read or written
+  limit,             ///< a size or count beyond casteljau's limits (core/tolerance.hpp)
+  singular,          ///< a linear system without a unique solution (interpolation, fits)
+};
+
+/// The kind's name as written above ("out_of_domain"), for logs and messages.
+constexpr const char* name_of(ErrorKind kind) noexcept {
+  switch (kind) {
+    case ErrorKind::invalid_argument: return "invalid_argument";
+    case ErrorKind::out_of_domain: return "out_of_domain";
+    case ErrorKind::parse: return "parse";
+    case ErrorKind::io: return "io";
+    case ErrorKind::limit: return "limit";
+    case ErrorKind::singular: return "singular";
+  }
+  return "invalid_argument";
+}
+
 /// Why untrusted input was refused: one sentence, "<what>, <where>", e.g.
-/// "coordinate 1 of control point 3 is NaN". Front ends print it unchanged.
+/// "coordinate 1 of control point 3 is NaN", and its kind. Front ends print
+/// the message unchanged.
 struct Error {
   std::string message;
+  ErrorKind kind = ErrorKind::invalid_argument;
 };
 
 template <class T>
