@@ -11,9 +11,7 @@
 #include <cstdlib>
 #include <memory>
 
-#ifndef CASTELJAU_VERSION
-#error "CASTELJAU_VERSION (CMake's PROJECT_VERSION) must be defined for the command line"
-#endif
+#include "casteljau/version.hpp"
 
 namespace casteljau::cli {
 namespace {
@@ -165,7 +163,7 @@ std::string lines_of(const std::vector<std::string>& lines) {
 
 }  // namespace
 
-std::string version_line() { return std::string("casteljau ") + CASTELJAU_VERSION; }
+std::string version_line() { return std::string("casteljau ") + CASTELJAU_VERSION_STRING; }
 
 std::size_t help_width() {
   std::size_t width = 0;

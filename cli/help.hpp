@@ -10,8 +10,8 @@
 
 namespace casteljau::cli {
 
-/// "casteljau 0.1.0": the VERSION of CMake's project(), passed to the
-/// compiler as CASTELJAU_VERSION (CMakeLists.txt), written nowhere else.
+/// "casteljau 0.1.0": the VERSION of CMake's project(), which
+/// casteljau/version.hpp is generated from (CMakeLists.txt), written nowhere else.
 std::string version_line();
 
 /// The width help is wrapped to: COLUMNS when it is a whole number, else the

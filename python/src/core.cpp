@@ -4,6 +4,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/version.hpp"
 
 #include <fmt/format.h>
 
@@ -19,7 +20,7 @@ Tolerance tolerance_from(double distance, const std::string& what) {
 }
 
 void bind_core(py::module_& module) {
-  module.attr("__version__") = CASTELJAU_VERSION;
+  module.attr("__version__") = CASTELJAU_VERSION_STRING;
   py::module_ limits = module.def_submodule(
       "tolerances", "The limits and tolerances of include/casteljau/core/tolerance.hpp (read-only values).");
   limits.attr("MAX_BEZIER_DEGREE") = tolerances::kMaxBezierDegree;
