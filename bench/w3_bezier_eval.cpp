@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/curves/curve_view.hpp"
 #include "support/splitmix.hpp"
 
 #if defined(CASTELJAU_HAVE_GMP)
@@ -148,6 +149,19 @@ void run_point_at(Case& c) {
     for (int j = 0; j < d; ++j) c.out[k * d + j] = p[j];
   }
 }
+
+/// point_at<D>: one point per call as a Vec<D>, no allocation (the batch
+/// kernel on one parameter); the row beside casteljau-point_at shows what
+/// the heap Point of the general call costs.
+template <int N, int D>
+struct FixedPointAt {
+  static void run(Case& c) {
+    for (std::size_t k = 0; k < c.ts.size(); ++k) {
+      const casteljau::Vec<D> p = casteljau::point_at<D>(c.curve, c.ts[k]);
+      for (int j = 0; j < D; ++j) c.out[k * D + j] = p[j];
+    }
+  }
+};
 
 /// The instance of a degree/dimension template for W3's degrees.
 template <template <int, int> class F>
@@ -317,6 +331,7 @@ void register_rows() {
       };
       add("casteljau", &run_casteljau, true);
       add("casteljau-point_at", &run_point_at);
+      add("casteljau-point_at-fixed", for_w3<FixedPointAt>(degree, dimension), true);
       add("decasteljau-plain", for_w3<Plain>(degree, dimension));
 #if defined(CASTELJAU_HAVE_2GEOM)
       if (dimension == 2) add("lib2geom", &run_2geom);

@@ -372,7 +372,8 @@ struct CasteljauFit final : Fit {
 std::unique_ptr<Fit> fit_casteljau(const Case& c, Condition condition) {
   const bool closed = condition == Condition::periodic;
   const casteljau::PointArray& points = closed ? c.closed_points : c.open_points;
-  auto parameters = casteljau::parameter_values(points, casteljau::Parameterization::chord_length, closed);
+  auto parameters = casteljau::parameter_values(points, casteljau::Parameterization::chord_length,
+                                                  closed ? casteljau::Closure::closed : casteljau::Closure::open);
   if (!parameters) return nullptr;
   casteljau::CubicEnds ends;
   switch (condition) {

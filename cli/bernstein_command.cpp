@@ -25,7 +25,7 @@ int run_bernstein(const BernsteinOptions& options) {
   if (!format) return fail(format.error());
   const auto n = whole_number("N", options.degree, 1, tolerances::kMaxPlottedBasisDegree);
   if (!n) return fail(n.error());
-  auto figure = render::bernstein_basis_figure(static_cast<int>(*n), options.without_ends);
+  auto figure = render::bernstein_basis_figure(static_cast<int>(*n), options.without_ends ? render::BasisEnds::omitted : render::BasisEnds::included);
   if (!figure) return fail(figure.error());
   TerminalProgress progress("bernstein");
   return write_figure_output(options.output, *figure, *format, progress.callback());

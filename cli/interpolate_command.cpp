@@ -139,12 +139,15 @@ Status check_columns(const MethodRules& rules, const InterpolateOptions& options
                            rules.name)};
 }
 
+/// --closed as the library's Closure.
+Closure closure_of(const InterpolateOptions& options) { return options.closed ? Closure::closed : Closure::open; }
+
 /// The parameter values t_0..t_m (t_{m+1} for the closing step of a closed
 /// curve): x with --function, else --param (uniform when not given).
 Expected<std::vector<double>> parameters_of(const PointArray& points, const InterpolateOptions& options,
                                             Parameterization kind) {
   if (options.function) return function_parameters(points);
-  return parameter_values(points, kind, options.closed);
+  return parameter_values(points, kind, closure_of(options));
 }
 
 Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& options, PointArray points) {
@@ -168,14 +171,14 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
         if (!(*value > 0.0)) return Error{fmt::format("--alpha: {} is not > 0 (the tangents are divided by 3 alpha)", *value)};
         alpha = *value;
       }
-      auto curve = interpolate_c1_bezier(points, alpha, options.closed);
+      auto curve = interpolate_c1_bezier(points, alpha, closure_of(options));
       if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }
     case Method::catmull_rom: {
-      auto parameters = parameter_values(points, kind, options.closed);
+      auto parameters = parameter_values(points, kind, closure_of(options));
       if (!parameters) return in_file(options.points, parameters.error());
-      auto curve = interpolate_catmull_rom(points, *parameters, options.closed);
+      auto curve = interpolate_catmull_rom(points, *parameters, closure_of(options));
       if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }
@@ -305,9 +308,9 @@ Expected<Model> build_model(const MethodRules& rules, const InterpolateOptions& 
         tangents.resize(at.size() * static_cast<std::size_t>(d));
       }
       const PointArray slopes = PointArray::from_trusted(d, std::move(tangents));
-      auto parameters = parameter_values(at, kind, options.closed);
+      auto parameters = parameter_values(at, kind, closure_of(options));
       if (!parameters) return in_file(options.points, parameters.error());
-      auto curve = interpolate_hermite(at, slopes, *parameters, options.closed);
+      auto curve = interpolate_hermite(at, slopes, *parameters, closure_of(options));
       if (!curve) return in_file(options.points, curve.error());
       return Model{std::move(*curve)};
     }

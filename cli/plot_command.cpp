@@ -133,7 +133,8 @@ int run_plot(const PlotCommandOptions& options) {
       }
       surface.view = render::ViewAngles{azimuth, elevation};
     }
-    auto figure = render::surface_plot_figure(sources, surface, *format != render::FigureFormat::svg);
+    auto figure = render::surface_plot_figure(sources, surface,
+                                              *format != render::FigureFormat::svg ? render::Shading::shaded : render::Shading::none);
     if (!figure) return fail(figure.error());
     return write_plot(*figure, options.output, *format);
   }

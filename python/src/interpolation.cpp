@@ -37,7 +37,10 @@ namespace casteljau::python {
 
 namespace {
 
-/// Runs `work` (which must not touch Python objects) without the GIL.
+/// Python's closed=True as the library's Closure.
+Closure closure_of(bool closed) { return closed ? Closure::closed : Closure::open; }
+
+/// The parameterization a Python string names (ValueError for another).
 Parameterization parameterization_from(const std::string& name) { return unwrap(parameterization_from_name(name)); }
 
 FitEnds fit_ends_from(const std::string& name) {
@@ -346,7 +349,7 @@ void bind_interpolation(py::module_& module) {
       "parameter_values",
       [](const py::object& points, const std::string& kind, bool closed) {
         const PointArray data = points_from(points, "points");
-        return to_numpy(std::span<const double>(unwrap(parameter_values(data, parameterization_from(kind), closed))));
+        return to_numpy(std::span<const double>(unwrap(parameter_values(data, parameterization_from(kind), closure_of(closed)))));
       },
       py::arg("points"), py::arg("kind"), py::arg("closed") = false,
       "Normalized parameter values 0 = t_0 < ... = 1 with steps |P_{i+1} - P_i|^e, e = 0, 1, 1/2 for kind 'uniform', "
@@ -374,7 +377,7 @@ void bind_interpolation(py::module_& module) {
       "interpolate_c1_bezier",
       [](const py::object& points, double alpha, bool closed) {
         const PointArray data = points_from(points, "points");
-        return unwrap(interpolate_c1_bezier(data, alpha, closed));
+        return unwrap(interpolate_c1_bezier(data, alpha, closure_of(closed)));
       },
       py::arg("points"), py::arg("alpha") = 1.0, py::arg("closed") = false,
       "Seed 000's C1 interpolant: cubic Bézier pieces P_i, Q_i, R_i, P_{i+1} on [i, i+1] with tangents "
@@ -386,7 +389,7 @@ void bind_interpolation(py::module_& module) {
       [](const py::object& points, const py::object& parameters, bool closed) {
         const PointArray data = points_from(points, "points");
         const std::vector<double> t = values_from(parameters, "parameters");
-        return unwrap(interpolate_catmull_rom(data, t, closed));
+        return unwrap(interpolate_catmull_rom(data, t, closure_of(closed)));
       },
       py::arg("points"), py::arg("parameters"), py::arg("closed") = false,
       "The Catmull–Rom spline through the points at the parameters (uniform, chord or centripetal from "
@@ -410,7 +413,7 @@ void bind_interpolation(py::module_& module) {
         const PointArray data = points_from(points, "points");
         const PointArray slopes = points_from(tangents, "tangents");
         const std::vector<double> t = values_from(parameters, "parameters");
-        return unwrap(interpolate_hermite(data, slopes, t, closed));
+        return unwrap(interpolate_hermite(data, slopes, t, closure_of(closed)));
       },
       py::arg("points"), py::arg("tangents"), py::arg("parameters"), py::arg("closed") = false,
       "The C1 piecewise cubic with C(t_i) = P_i and C'(t_i) = T_i (scipy's CubicHermiteSpline in parametric form; "

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "casteljau/core/precondition.hpp"
+
 namespace casteljau {
 
 Expected<AffineMap> AffineMap::make(int dimension, std::vector<double> linear, std::vector<double> translation) {
@@ -43,7 +45,7 @@ AffineMap AffineMap::rotate_2d(double radians) {
 }
 
 AffineMap AffineMap::after(const AffineMap& first) const {
-  assert(first.dimension == dimension);
+  detail::require(first.dimension == dimension, "AffineMap::after", "both maps must have one dimension");
   const int d = dimension;
   AffineMap result{d, std::vector<double>(d * d, 0.0), transformed_point(*this, first.translation)};
   for (int i = 0; i < d; ++i)
@@ -54,7 +56,7 @@ AffineMap AffineMap::after(const AffineMap& first) const {
 
 Point transformed_point(const AffineMap& map, std::span<const double> x) {
   const int d = map.dimension;
-  assert(static_cast<int>(x.size()) == d);
+  detail::require(static_cast<int>(x.size()) == d, "transformed_point", "x must have the map's dimension");
   Point y(map.translation.begin(), map.translation.end());
   for (int i = 0; i < d; ++i)
     for (int j = 0; j < d; ++j) y[i] += map.linear[i * d + j] * x[j];

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "casteljau/core/precondition.hpp"
+
 namespace casteljau {
 
 namespace {
@@ -75,7 +77,8 @@ double bernstein(int n, int k, double t) {
 }
 
 void bernstein_all(int n, double t, std::span<double> out) {
-  assert(n >= 0 && out.size() >= static_cast<std::size_t>(n) + 1);
+  detail::require(n >= 0 && out.size() >= static_cast<std::size_t>(n) + 1, "bernstein_all",
+                  "n must be >= 0 and out must hold n + 1 values");
   const double s = 1.0 - t;
   out[0] = 1.0;
   for (int j = 1; j <= n; ++j) {
@@ -90,7 +93,8 @@ void bernstein_all(int n, double t, std::span<double> out) {
 }
 
 void bernstein_derivatives(int n, double t, int order, std::span<double> out) {
-  assert(n >= 0 && order >= 0 && out.size() >= static_cast<std::size_t>(n) + 1);
+  detail::require(n >= 0 && order >= 0 && out.size() >= static_cast<std::size_t>(n) + 1, "bernstein_derivatives",
+                  "n and order must be >= 0 and out must hold n + 1 values");
   std::fill(out.begin(), out.begin() + n + 1, 0.0);
   if (order > n) return;
   const int m = n - order;

@@ -125,7 +125,7 @@ void derivative_into(const BezierCurve& curve, double t, int order, std::span<do
 }  // namespace
 
 std::vector<Point> derivatives_up_to(const BezierCurve& curve, double t, int max_order) {
-  assert(max_order >= 0);
+  detail::require(max_order >= 0, "derivatives_up_to", "max_order must be >= 0");
   const int d = curve.dimension();
   std::vector<Point> result;
   result.reserve(max_order + 1);

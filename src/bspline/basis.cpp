@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../core/workspace.hpp"
+#include "casteljau/core/precondition.hpp"
 
 namespace casteljau {
 
@@ -39,8 +40,10 @@ int find_span(std::span<const double> knots, int degree, double u) {
 
 void basis_functions(std::span<const double> knots, int degree, int span, double u, std::span<double> out) {
   const int p = degree;
-  assert(out.size() == static_cast<std::size_t>(p) + 1);
-  assert(span >= p && static_cast<std::size_t>(span) + 1 < knots.size());
+  detail::require(p >= 0 && out.size() == static_cast<std::size_t>(p) + 1, "basis_functions",
+                  "out must hold degree + 1 values");
+  detail::require(span >= p && static_cast<std::size_t>(span) + static_cast<std::size_t>(p) < knots.size(),
+                  "basis_functions", "span must index a knot interval with degree knots on each side");
   detail::Workspace<512> workspace;
   const std::span<double> scratch = workspace.take(2 * static_cast<std::size_t>(p) + 2);
   double* left = scratch.data();
@@ -65,8 +68,10 @@ void basis_function_derivatives(std::span<const double> knots, int degree, int s
                                 std::span<double> out) {
   const int p = degree;
   const std::size_t width = static_cast<std::size_t>(p) + 1;
-  assert(order >= 0 && out.size() == (static_cast<std::size_t>(order) + 1) * width);
-  assert(span >= p && static_cast<std::size_t>(span) + 1 < knots.size());
+  detail::require(p >= 0 && order >= 0 && out.size() == (static_cast<std::size_t>(order) + 1) * width,
+                  "basis_function_derivatives", "order must be >= 0 and out must hold (order + 1) * (degree + 1) values");
+  detail::require(span >= p && static_cast<std::size_t>(span) + static_cast<std::size_t>(p) < knots.size(),
+                  "basis_function_derivatives", "span must index a knot interval with degree knots on each side");
   detail::Workspace<1024> workspace;
   const std::span<double> scratch = workspace.take(width * width + 4 * width);
   // ndu, (p+1) x (p+1) as in A2.3: its upper triangle ndu[r][j] (r <= j)

@@ -112,7 +112,7 @@ Point point_at_basis_sum(const BSplineCurve& curve, double u) {
 }
 
 std::vector<Point> derivatives_up_to(const BSplineCurve& curve, double u, int max_order) {
-  assert(max_order >= 0);
+  detail::require(max_order >= 0, "derivatives_up_to", "max_order must be >= 0");
   const int d = curve.dimension();
   const int width = row_width(curve);
   std::vector<double> rows((static_cast<std::size_t>(max_order) + 1) * static_cast<std::size_t>(width));

@@ -33,7 +33,11 @@ Expected<PointArray> PointArray::make(int dimension, std::vector<double> coordin
 
 Expected<PointArray> PointArray::make(const std::vector<std::vector<double>>& rows,
                                       const char* what) {
-  if (rows.empty()) return PointArray{};
+  // No row gives no dimension: an empty set is made with its dimension,
+  // make(d, {}), so that what is later added to it or built on it knows d.
+  if (rows.empty())
+    return Error{std::string("no ") + what + "s: an empty set has no dimension (make(dimension, {}) makes one)",
+                 ErrorKind::invalid_argument};
   const std::size_t d = rows.front().size();
   if (d == 0) return Error{std::string(what) + " 0 has no coordinates"};
   std::vector<double> flat;

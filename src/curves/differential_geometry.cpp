@@ -6,6 +6,7 @@
 #include <cmath>
 #include <span>
 
+#include "casteljau/core/precondition.hpp"
 #include "casteljau/core/tolerance.hpp"
 
 namespace casteljau {
@@ -102,7 +103,7 @@ Point unit_normal_at(CurveView curve, double u) {
 }
 
 Point binormal_at(CurveView curve, double u) {
-  assert(curve.dimension() == 3);
+  detail::require(curve.dimension() == 3, "binormal_at", "the curve must lie in 3D (dimension() == 3)");
   const Point normal = unit_normal_at(curve, u);
   if (norm(normal) == 0.0) return Point(3, 0.0);
   return cross(unit_tangent_at(curve, u), normal);
@@ -114,7 +115,7 @@ double curvature_at(CurveView curve, double u) {
 }
 
 double signed_curvature_at(CurveView curve, double u) {
-  assert(curve.dimension() == 2);
+  detail::require(curve.dimension() == 2, "signed_curvature_at", "the curve must be planar (dimension() == 2)");
   const auto ders = derivatives_up_to(curve, u, 2);
   const double speed = norm(ders[1]);
   const double cross = ders[1][0] * ders[2][1] - ders[1][1] * ders[2][0];
@@ -123,7 +124,7 @@ double signed_curvature_at(CurveView curve, double u) {
 }
 
 double torsion_at(CurveView curve, double u) {
-  assert(curve.dimension() == 3);
+  detail::require(curve.dimension() == 3, "torsion_at", "the curve must lie in 3D (dimension() == 3)");
   const auto ders = derivatives_up_to(curve, u, 3);
   return torsion_of(ders[1], ders[2], ders[3]);
 }

@@ -12,7 +12,8 @@
 
 namespace casteljau {
 
-Expected<PiecewiseBezierCurve> interpolate_c1_bezier(const PointArray& points, double alpha, bool closed) {
+Expected<PiecewiseBezierCurve> interpolate_c1_bezier(const PointArray& points, double alpha, Closure closure) {
+  const bool closed = closure == Closure::closed;
   const std::size_t count = points.size();
   const std::size_t needed = closed ? 3 : 2;
   if (count < needed)

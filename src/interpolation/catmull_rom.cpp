@@ -14,7 +14,8 @@
 namespace casteljau {
 
 Expected<BSplineCurve> interpolate_catmull_rom(const PointArray& points, std::span<const double> parameters,
-                                               bool closed) {
+                                               Closure closure) {
+  const bool closed = closure == Closure::closed;
   const std::size_t count = points.size();
   const std::size_t needed = closed ? 3 : 2;
   if (count < needed)
@@ -61,7 +62,7 @@ Expected<BSplineCurve> interpolate_catmull_rom(const PointArray& points, std::sp
       return Error{"the tangent at point " + std::to_string(j / d) +
                    " overflows (parameter steps too small for the distances between points)"};
   return interpolate_hermite(points, PointArray::from_trusted(points.dimension(), std::move(tangents)), parameters,
-                             closed);
+                             closure);
 }
 
 }  // namespace casteljau

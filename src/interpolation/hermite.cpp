@@ -51,7 +51,8 @@ Expected<BezierCurve> ferguson_curve(std::span<const double> start, std::span<co
 }
 
 Expected<BSplineCurve> interpolate_hermite(const PointArray& points, const PointArray& tangents,
-                                           std::span<const double> parameters, bool closed) {
+                                           std::span<const double> parameters, Closure closure) {
+  const bool closed = closure == Closure::closed;
   const std::size_t count = points.size();
   const std::size_t needed = closed ? 3 : 2;
   if (count < needed)

@@ -80,7 +80,8 @@ Expected<Parameterization> parameterization_from_name(std::string_view name) {
                "', expected uniform, chord (or chord-length) or centripetal"};
 }
 
-Expected<std::vector<double>> parameter_values(const PointArray& points, Parameterization kind, bool closed) {
+Expected<std::vector<double>> parameter_values(const PointArray& points, Parameterization kind, Closure closure) {
+  const bool closed = closure == Closure::closed;
   const std::size_t count = points.size();
   if (count < 2) {
     return Error{"interpolation needs at least 2 points, got " + std::to_string(count)};

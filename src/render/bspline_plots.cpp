@@ -120,7 +120,7 @@ Status add_bspline(Panel& panel, const BSplineCurve& curve, const BSplinePlotOpt
   if (!pieces) return pieces.error();
   // The control polygon of what is drawn: the graph's (xi_i, x_i) in 1D.
   std::vector<Vec2> polygon;
-  if (graph && curve.degree() >= 1) polygon = plane_points(plane_bspline(curve)->control_points());
+  if (graph && curve.degree() >= 1) polygon = plane_points(plane_bspline(curve).value().control_points());
   else if (!graph) polygon = plane_points(curve.control_points());
   if (options.curvature_comb && !graph) {
     for (const auto& piece : pieces->pieces) {

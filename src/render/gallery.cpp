@@ -59,8 +59,8 @@ Panel geometry_panel() {
   return panel;
 }
 
-GalleryFigure bernstein_figure(int n, bool without_ends, std::string name, std::string explanation) {
-  return {std::move(name), std::move(explanation), *bernstein_basis_figure(n, without_ends)};
+GalleryFigure bernstein_figure(int n, BasisEnds ends, std::string name, std::string explanation) {
+  return {std::move(name), std::move(explanation), *bernstein_basis_figure(n, ends)};
 }
 
 GalleryFigure notebook_polygon_figure(const BezierCurve& curve) {
@@ -452,10 +452,10 @@ Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path
   if (!semicircle) return semicircle.error();
 
   std::vector<GalleryFigure> figures;
-  figures.push_back(bernstein_figure(20, false, "01_bernstein_20",
+  figures.push_back(bernstein_figure(20, BasisEnds::included, "01_bernstein_20",
                                      "The 21 Bernstein polynomials B_(20,k)(t) = C(20,k) t^k (1-t)^(20-k) on [0,1] (the "
                                      "notebook's plot_bernstein(20)): positive, summing to 1, B_(20,k) peaking at t = k/20."));
-  figures.push_back(bernstein_figure(20, true, "02_bernstein_20_without_ends",
+  figures.push_back(bernstein_figure(20, BasisEnds::omitted, "02_bernstein_20_without_ends",
                                      "The same basis without B_(20,0) and B_(20,20), which dominate near the ends: the "
                                      "inner functions peak at k/20 with heights falling toward the middle."));
   figures.push_back(notebook_polygon_figure(*polygon));

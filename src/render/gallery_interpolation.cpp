@@ -153,7 +153,7 @@ Expected<GalleryFigure> interpolants_figure(const PointArray& data, const std::s
                             largest_tangent_jump(*curve, false), data_error(*curve, data, joints));
   }
   const PointArray closed_points = without_closing_duplicate(data);
-  auto parameters = parameter_values(closed_points, Parameterization::centripetal, true);
+  auto parameters = parameter_values(closed_points, Parameterization::centripetal, Closure::closed);
   if (!parameters) return parameters.error();
   auto cubic = interpolate_cubic(closed_points, *parameters, CubicEnds{EndCondition::periodic, {}, {}});
   if (!cubic) return cubic.error();
@@ -521,7 +521,7 @@ Expected<GalleryFigure> methods_figure(const PointArray& data, const std::string
     return ok.error();
   {
     const PointArray closed_points = without_closing_duplicate(data);
-    auto closed = parameter_values(closed_points, Parameterization::chord_length, true);
+    auto closed = parameter_values(closed_points, Parameterization::chord_length, Closure::closed);
     if (!closed) return closed.error();
     auto curve = interpolate_cubic(closed_points, *closed, CubicEnds{EndCondition::periodic, {}, {}});
     if (!curve) return curve.error();

@@ -186,7 +186,7 @@ Expected<GalleryFigure> tessellation_figure() {
     if (!mesh) return mesh.error();
     Panel panel = view_panel(fmt::format("tolerance {} (radius 1): {} triangles, {} vertices", tolerance,
                                          mesh->triangles.size(), mesh->vertices.size()));
-    add_shaded_mesh(panel, *mesh, view, Color{120, 190, 140, 1.0}, true);
+    add_shaded_mesh(panel, *mesh, view, Color{120, 190, 140, 1.0}, MeshEdges::drawn);
     figure.panels.push_back(std::move(panel));
   }
   return GalleryFigure{"34_tessellation_tolerances",

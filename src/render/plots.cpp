@@ -144,7 +144,8 @@ BezierCurve bernstein_graph(int n, int k) {
   return BezierCurve::from_trusted(PointArray::from_trusted(2, std::move(coordinates)));
 }
 
-Expected<Panel> bernstein_basis_panel(int n, bool without_ends) {
+Expected<Panel> bernstein_basis_panel(int n, BasisEnds ends) {
+  const bool without_ends = ends == BasisEnds::omitted;
   if (n < 1) return Error{fmt::format("the degree of the Bernstein basis must be >= 1, got {}", n)};
   if (n > tolerances::kMaxPlottedBasisDegree)
     return Error{fmt::format("the degree of the Bernstein basis must be <= {} to be plotted, got {}",
@@ -159,13 +160,13 @@ Expected<Panel> bernstein_basis_panel(int n, bool without_ends) {
   return panel;
 }
 
-Expected<Figure> bernstein_basis_figure(int n, bool without_ends) {
-  auto panel = bernstein_basis_panel(n, without_ends);
+Expected<Figure> bernstein_basis_figure(int n, BasisEnds ends) {
+  auto panel = bernstein_basis_panel(n, ends);
   if (!panel) return panel.error();
   Figure figure;
   figure.width = 800;
   figure.height = 700;
-  figure.title = without_ends ? fmt::format("Bernstein basis B_{{{0},k}}, k = 1..{1} (without k = 0 and k = {0})", n, n - 1)
+  figure.title = ends == BasisEnds::omitted ? fmt::format("Bernstein basis B_{{{0},k}}, k = 1..{1} (without k = 0 and k = {0})", n, n - 1)
                               : fmt::format("Bernstein basis B_{{{0},k}}, k = 0..{0}", n);
   figure.panels.push_back(std::move(*panel));
   return figure;

@@ -192,7 +192,7 @@ Status add_surface_wireframe(Panel& panel, const Model& surface, const SurfacePl
   return {};
 }
 
-void add_shaded_mesh(Panel& panel, const TriangleMesh& mesh, const ViewAngles& view, Color base, bool edges) {
+void add_shaded_mesh(Panel& panel, const TriangleMesh& mesh, const ViewAngles& view, Color base, MeshEdges edges) {
   const Frame f = frame_of(view);
   // A light from over the viewer's left shoulder.
   Vec3 light = f.toward + 0.6 * f.up - 0.4 * f.right;
@@ -228,12 +228,12 @@ void add_shaded_mesh(Panel& panel, const TriangleMesh& mesh, const ViewAngles& v
     if (mesh.normals.size() == mesh.vertices.size()) {
       for (const auto v : tri) facing += dot3(f.toward, mesh.normals[v]);
     }
-    if (edges && facing >= 0.0) {
+    if (edges == MeshEdges::drawn && facing >= 0.0) {
       for (int k = 0; k < 3; ++k) lines.segments.push_back({region.boundary[k], region.boundary[(k + 1) % 3]});
     }
     panel.regions.push_back(std::move(region));
   }
-  if (edges) panel.segments.push_back(std::move(lines));
+  if (edges == MeshEdges::drawn) panel.segments.push_back(std::move(lines));
 }
 
 Status add_shaded_surfaces(Panel& panel, const std::vector<const Model*>& surfaces, const ViewAngles& view,
@@ -259,7 +259,8 @@ Status add_shaded_surfaces(Panel& panel, const std::vector<const Model*>& surfac
 }
 
 Expected<Figure> surface_plot_figure(const std::vector<PlotSource>& sources, const SurfacePlotOptions& options,
-                                     bool shaded) {
+                                     Shading shading) {
+  const bool shaded = shading == Shading::shaded;
   std::vector<std::pair<std::string, const Model*>> surfaces;
   for (const auto& source : sources) {
     if (source.models.empty()) {

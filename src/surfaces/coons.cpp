@@ -119,7 +119,7 @@ Expected<CoonsPatch> CoonsPatch::make(BSplineCurve u0, BSplineCurve u1, BSplineC
 const char* blending_name(CoonsBlending blending) { return blending == CoonsBlending::cubic ? "cubic" : "linear"; }
 
 std::array<double, 2> blending_functions(CoonsBlending blending, double t, int order) {
-  assert(order >= 0);
+  detail::require(order >= 0, "blending_functions", "order must be >= 0");
   if (blending == CoonsBlending::linear) {
     switch (order) {
       case 0: return {1.0 - t, t};
@@ -163,7 +163,7 @@ Point partial_derivative_at(const CoonsPatch& patch, double u, double v, int ord
 }
 
 Point normal_at(const CoonsPatch& patch, double u, double v) {
-  assert(patch.dimension() == 3);
+  detail::require(patch.dimension() == 3, "normal_at", "the patch must lie in 3D (dimension() == 3)");
   const Vec3 su = Vec3::from(partial_derivative_at(patch, u, v, 1, 0));
   const Vec3 sv = Vec3::from(partial_derivative_at(patch, u, v, 0, 1));
   Vec3 n = cross(su, sv);
@@ -208,7 +208,8 @@ void points_at(const CoonsPatch& patch, std::span<const double> us, std::span<co
 void grid_points_at(const CoonsPatch& patch, std::span<const double> us, std::span<const double> vs,
                     std::span<double> out) {
   const std::size_t d = static_cast<std::size_t>(patch.dimension());
-  assert(out.size() == us.size() * vs.size() * d);
+  detail::require(out.size() == us.size() * vs.size() * d, "grid_points_at",
+                  "out must hold us.size() * vs.size() * dimension() values");
   // The four boundaries are evaluated once per grid line, not per point.
   std::vector<double> u0(vs.size() * d), u1(vs.size() * d), v0(us.size() * d), v1(us.size() * d);
   points_at(patch.u0(), vs, u0);

@@ -337,12 +337,12 @@ Point partial_derivative_at(const BezierSurface& surface, double u, double v, in
 
 std::vector<std::vector<Point>> partial_derivatives_up_to(const BSplineSurface& surface, double u, double v,
                                                        int max_order) {
-  assert(max_order >= 0);
+  detail::require(max_order >= 0, "partial_derivatives_up_to", "max_order must be >= 0");
   return derivative_table(surface, u, v, max_order, max_order, max_order);
 }
 
 Point normal_at(const BSplineSurface& surface, double u, double v) {
-  assert(surface.dimension() == 3);
+  detail::require(surface.dimension() == 3, "normal_at", "the surface must lie in 3D (dimension() == 3)");
   const auto table = derivative_table(surface, u, v, 1, 1, 2);
   const Vec3 su = Vec3::from(table[1][0]);
   const Vec3 sv = Vec3::from(table[0][1]);

@@ -185,7 +185,8 @@ TEST(Tangent, RepeatedEndPointUsesTheNextLeg) {
   const Point t1 = unit_tangent_at(back, 1.0);
   EXPECT_NEAR(t1[0], 3 / 5.0, 1e-15);
   EXPECT_NEAR(t1[1], -4 / 5.0, 1e-15);
-  EXPECT_EQ(unit_tangent_at(curve_from({{2, 2}, {2, 2}}), 0.5), (Point{0, 0}));
+  const auto point = curve_from({{2, 2}, {2, 2}});
+  EXPECT_EQ(unit_tangent_at(point, 0.5), (Point{0, 0}));
 }
 
 TEST(Curvature, QuarterCircleHasCurvatureOne) {

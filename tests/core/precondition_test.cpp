@@ -8,11 +8,16 @@
 
 #include <vector>
 
+#include "casteljau/bezier/affine.hpp"
+#include "casteljau/bezier/bernstein.hpp"
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bezier/piecewise_bezier.hpp"
 #include "casteljau/bspline/bspline_curve.hpp"
+#include "casteljau/bspline/basis.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/curves/curve_view.hpp"
+#include "casteljau/curves/differential_geometry.hpp"
 #include "casteljau/surfaces/bezier_surface.hpp"
 #include "casteljau/surfaces/evaluate.hpp"
 
@@ -51,6 +56,30 @@ TEST(PreconditionDeathTest, NegativeDerivativeOrdersAbort) {
   const std::vector<double> ts{0.5};
   std::vector<double> out(2);
   EXPECT_DEATH(derivatives_at(cubic(), ts, -2, out), "casteljau: derivatives_at: the derivative order must be >= 0");
+}
+
+TEST(PreconditionDeathTest, WrongDimensionsAbortInsteadOfReadingPastAPoint) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  // A planar patch: its normal would read a third coordinate that is not there.
+  const PointArray flat = PointArray::make({{0, 0}, {1, 0}, {0, 1}, {1, 1}}).value();
+  const BezierSurface plane = BezierSurface::make(ControlNet::make(2, 2, flat).value()).value();
+  EXPECT_DEATH((void)normal_at(plane, 0.5, 0.5), "casteljau: normal_at: the surface must lie in 3D");
+  EXPECT_DEATH((void)torsion_at(cubic(), 0.5), "casteljau: torsion_at: the curve must lie in 3D");
+  EXPECT_DEATH((void)binormal_at(cubic(), 0.5), "casteljau: binormal_at: the curve must lie in 3D");
+  EXPECT_DEATH((void)point_at<3>(cubic(), 0.5), "casteljau: point_at<D>: D must be the curve's dimension");
+  const std::vector<double> point3{1.0, 2.0, 3.0};
+  EXPECT_DEATH((void)transformed_point(AffineMap::identity(2), point3),
+               "casteljau: transformed_point: x must have the map's dimension");
+}
+
+TEST(PreconditionDeathTest, BasisKernelsCheckTheirSpansAndOrders) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const std::vector<double> knots{0, 0, 0, 1, 1, 1};
+  std::vector<double> two(2), three(3);
+  EXPECT_DEATH(basis_functions(knots, 2, 2, 0.5, two), "casteljau: basis_functions: out must hold degree \\+ 1");
+  EXPECT_DEATH(basis_functions(knots, 2, 4, 0.5, three), "casteljau: basis_functions: span must index");
+  EXPECT_DEATH(bernstein_all(3, 0.5, three), "casteljau: bernstein_all: n must be >= 0 and out must hold");
+  EXPECT_DEATH((void)derivatives_up_to(cubic(), 0.5, -1), "casteljau: derivatives_up_to: max_order must be >= 0");
 }
 
 TEST(Precondition, CorrectCallsPass) {

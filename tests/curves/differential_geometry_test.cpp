@@ -98,7 +98,8 @@ TEST(DifferentialGeometry, SignedCurvatureOfTheParabolaAsABSpline) {
   for (double t : {0.0, 0.3, 0.5, 1.0}) {
     const double expected = 2 / std::pow(1 + 4 * t * t, 1.5);
     EXPECT_NEAR(signed_curvature_at(as_bspline, t), expected, 1e-14);
-    EXPECT_NEAR(signed_curvature_at(reversed(as_bspline), 1 - t), -expected, 1e-14);
+    const BSplineCurve backwards = reversed(as_bspline);
+    EXPECT_NEAR(signed_curvature_at(backwards, 1 - t), -expected, 1e-14);
   }
 }
 

@@ -179,7 +179,7 @@ TEST(C1Bezier, AlphaTwoIsUniformCatmullRomOnHeadAndCar) {
 
 TEST(C1Bezier, ClosedIsTheCyclicExtension) {
   const SeedPoints seed = read_seed_points("head.csv");
-  const auto curve = interpolate_c1_bezier(seed.points, 1.0, true);
+  const auto curve = interpolate_c1_bezier(seed.points, 1.0, Closure::closed);
   ASSERT_TRUE(curve) << curve.error().message;
   const std::size_t count = seed.points.size();
   ASSERT_EQ(curve->size(), static_cast<int>(count));
@@ -208,7 +208,7 @@ RC_GTEST_PROP(C1Bezier, InterpolatesAndIsC1, ()) {
   const PointArray points = PointArray::make(d, coordinates).value();
   const double alpha = *rc::gen::map(rc::gen::inRange(1, 401), [](int i) { return i / 100.0; });
   const bool closed = count >= 3 && *rc::gen::arbitrary<bool>();
-  const auto made = interpolate_c1_bezier(points, alpha, closed);
+  const auto made = interpolate_c1_bezier(points, alpha, closed ? Closure::closed : Closure::open);
   if (!made) {
     // Only a closed set whose random last point equals its first is refused.
     RC_ASSERT(closed);
@@ -239,7 +239,7 @@ TEST(C1Bezier, RefusesBadInput) {
   EXPECT_EQ(e.error().message, "c1-bezier curve needs at least 2 points, got 1");
   EXPECT_FALSE(interpolate_c1_bezier(PointArray{}));
   const PointArray two = PointArray::make(2, {0, 0, 1, 1}).value();
-  EXPECT_FALSE(interpolate_c1_bezier(two, 1.0, true));
+  EXPECT_FALSE(interpolate_c1_bezier(two, 1.0, Closure::closed));
   for (double alpha : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
     e = interpolate_c1_bezier(two, alpha);
     ASSERT_FALSE(e) << alpha;
@@ -250,10 +250,10 @@ TEST(C1Bezier, RefusesBadInput) {
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "coordinate 1 of point 1 is NaN");
   const PointArray repeated = PointArray::make(2, {0, 0, 1, 0, 1, 1, 0, 0}).value();
-  e = interpolate_c1_bezier(repeated, 1.0, true);
+  e = interpolate_c1_bezier(repeated, 1.0, Closure::closed);
   ASSERT_FALSE(e);
   EXPECT_NE(e.error().message.find("repeats the first"), std::string::npos) << e.error().message;
-  EXPECT_TRUE(interpolate_c1_bezier(repeated, 1.0, false));  // open: a loop back to P_0 is fine
+  EXPECT_TRUE(interpolate_c1_bezier(repeated, 1.0, Closure::open));  // open: a loop back to P_0 is fine
 }
 
 }  // namespace casteljau

@@ -100,7 +100,7 @@ void segment_data(const PointArray& points, std::span<const double> parameters, 
 /// the scale of the points (and of the difference quotients).
 void expect_barry_goldman(const PointArray& points, std::span<const double> parameters, bool closed,
                           const std::string& what) {
-  const auto curve = interpolate_catmull_rom(points, parameters, closed);
+  const auto curve = interpolate_catmull_rom(points, parameters, closed ? Closure::closed : Closure::open);
   ASSERT_TRUE(curve) << curve.error().message;
   const std::size_t count = points.size(), d = static_cast<std::size_t>(points.dimension());
   const std::size_t segments = closed ? count : count - 1;
@@ -146,7 +146,7 @@ TEST(CatmullRom, EqualsTheBarryGoldmanPyramidOnTheHead) {
   const PointArray head = head_points();
   for (auto kind : {Parameterization::uniform, Parameterization::chord_length, Parameterization::centripetal})
     for (bool closed : {false, true}) {
-      const auto parameters = parameter_values(head, kind, closed).value();
+      const auto parameters = parameter_values(head, kind, closed ? Closure::closed : Closure::open).value();
       expect_barry_goldman(head, parameters, closed,
                            std::string(name_of(kind)) + (closed ? " closed" : " open"));
     }
@@ -176,8 +176,8 @@ TEST(CatmullRom, UniformClosedEqualsClosedC1BezierAlphaTwo) {
   const PointArray head = head_points();
   std::vector<double> parameters(head.size() + 1);
   for (std::size_t i = 0; i < parameters.size(); ++i) parameters[i] = static_cast<double>(i);
-  const auto pieces = to_bezier_pieces(interpolate_catmull_rom(head, parameters, true).value());
-  const auto c1 = interpolate_c1_bezier(head, 2.0, true).value();
+  const auto pieces = to_bezier_pieces(interpolate_catmull_rom(head, parameters, Closure::closed).value());
+  const auto c1 = interpolate_c1_bezier(head, 2.0, Closure::closed).value();
   ASSERT_EQ(pieces.pieces.size(), c1.pieces().size());
   for (std::size_t i = 0; i < pieces.pieces.size(); ++i)
     for (std::size_t j = 0; j < 4; ++j)
@@ -252,9 +252,9 @@ RC_GTEST_PROP(CatmullRom, InterpolatesAndIsC1, ()) {
   const bool closed = *rc::gen::arbitrary<bool>();
   const auto kind = *rc::gen::element(Parameterization::uniform, Parameterization::chord_length,
                                       Parameterization::centripetal);
-  const auto parameters = parameter_values(points, kind, closed);
+  const auto parameters = parameter_values(points, kind, closed ? Closure::closed : Closure::open);
   if (!parameters) return;  // two random consecutive points coincide
-  const auto made = interpolate_catmull_rom(points, *parameters, closed);
+  const auto made = interpolate_catmull_rom(points, *parameters, closed ? Closure::closed : Closure::open);
   if (!made) {
     RC_ASSERT(closed && kind == Parameterization::uniform);  // the last point repeats the first
     return;
@@ -284,7 +284,7 @@ TEST(CatmullRom, RefusesBadInput) {
   e = interpolate_catmull_rom(three, std::vector<double>{0, 1});
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "a Catmull-Rom spline through 3 points needs 3 parameter values, got 2");
-  e = interpolate_catmull_rom(three, good, true);
+  e = interpolate_catmull_rom(three, good, Closure::closed);
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "a Catmull-Rom spline through 3 points (closed) needs 4 parameter values, got 3");
   e = interpolate_catmull_rom(three, std::vector<double>{0, 0.5, 0.5});
@@ -297,10 +297,10 @@ TEST(CatmullRom, RefusesBadInput) {
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "coordinate 1 of point 1 is NaN");
   const PointArray repeated = PointArray::make(2, {0, 0, 1, 0, 1, 1, 0, 0}).value();
-  e = interpolate_catmull_rom(repeated, std::vector<double>{0, 1, 2, 3, 4}, true);
+  e = interpolate_catmull_rom(repeated, std::vector<double>{0, 1, 2, 3, 4}, Closure::closed);
   ASSERT_FALSE(e);
   EXPECT_NE(e.error().message.find("repeats the first"), std::string::npos) << e.error().message;
-  EXPECT_FALSE(interpolate_catmull_rom(PointArray::make(2, {0, 0, 1, 1}).value(), std::vector<double>{0, 1, 2}, true));
+  EXPECT_FALSE(interpolate_catmull_rom(PointArray::make(2, {0, 0, 1, 1}).value(), std::vector<double>{0, 1, 2}, Closure::closed));
 }
 
 }  // namespace

@@ -509,7 +509,7 @@ TEST(Fit, RefusesBadInputWithOneClearMessage) {
   zero.control_point_count = 8;  // then λ = 0 is plain least squares
   const auto plain = fit_smoothing(points, t, zero);
   ASSERT_TRUE(plain) << error_of(plain);
-  EXPECT_EQ(plain->curve, fit_least_squares(points, t, 3, 8, FitEnds::free)->curve);
+  EXPECT_EQ(plain->curve, fit_least_squares(points, t, 3, 8, FitEnds::free).value().curve);
 
   EXPECT_EQ(error_of(fit_to_tolerance(points, t, 3, Tolerance{0.0})), "the tolerance is 0, it must be > 0");
   EXPECT_EQ(error_of(fit_to_tolerance(points, t, 3, Tolerance{-1.0})), "the tolerance is -1, it must be > 0");

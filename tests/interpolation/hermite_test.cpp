@@ -144,7 +144,7 @@ TEST(Hermite, ReproducesTheDataOnBothSidesOfEveryKnot) {
   for (bool closed : {false, true}) {
     std::vector<double> ts = parameters;
     if (closed) ts.push_back(5.5);
-    const auto curve = interpolate_hermite(points, tangents, ts, closed);
+    const auto curve = interpolate_hermite(points, tangents, ts, closed ? Closure::closed : Closure::open);
     ASSERT_TRUE(curve) << curve.error().message;
     const BezierPieces pieces = to_bezier_pieces(*curve);
     const std::size_t segments = ts.size() - 1;
@@ -183,7 +183,7 @@ TEST(Hermite, RefusesBadInput) {
   e = interpolate_hermite(points, PointArray::make(3, {1, 0, 0, 0, 1, 0, -1, 0, 0}).value(), t);
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "the tangents have dimension 3, the points have 2");
-  e = interpolate_hermite(points, tangents, t, true);
+  e = interpolate_hermite(points, tangents, t, Closure::closed);
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "Hermite interpolation of 3 points (closed) needs 4 parameter values, got 3");
   e = interpolate_hermite(points, tangents, std::vector<double>{0, 2, 1});
@@ -196,7 +196,7 @@ TEST(Hermite, RefusesBadInput) {
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "parameter 2 is infinite");
   const PointArray repeated = PointArray::make(2, {0, 0, 1, 0, 0, 0}).value();
-  e = interpolate_hermite(repeated, tangents, std::vector<double>{0, 1, 2, 3}, true);
+  e = interpolate_hermite(repeated, tangents, std::vector<double>{0, 1, 2, 3}, Closure::closed);
   ASSERT_FALSE(e);
   EXPECT_NE(e.error().message.find("repeats the first"), std::string::npos) << e.error().message;
 }

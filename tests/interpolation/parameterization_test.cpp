@@ -49,10 +49,10 @@ TEST(ParameterValues, CentripetalUsesSquareRootsOfTheDistances) {
 
 TEST(ParameterValues, ClosedAddsTheStepBackToTheFirstPoint) {
   // The unit square: four equal sides, the fourth from (0,1) back to (0,0).
-  const auto t = parameter_values(plane_points({0, 0, 1, 0, 1, 1, 0, 1}), Parameterization::chord_length, true);
+  const auto t = parameter_values(plane_points({0, 0, 1, 0, 1, 1, 0, 1}), Parameterization::chord_length, Closure::closed);
   ASSERT_TRUE(t);
   EXPECT_EQ(*t, (std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0}));
-  const auto uniform = parameter_values(plane_points({0, 0, 1, 0, 1, 1}), Parameterization::uniform, true);
+  const auto uniform = parameter_values(plane_points({0, 0, 1, 0, 1, 1}), Parameterization::uniform, Closure::closed);
   ASSERT_TRUE(uniform);
   EXPECT_EQ(uniform->size(), 4u);
 }
@@ -77,7 +77,7 @@ TEST(ParameterValues, RefusesCoincidentConsecutivePointsNamingThem) {
   EXPECT_EQ(error_of(parameter_values(points, Parameterization::centripetal)),
             "points 1 and 2 coincide, centripetal parameters need distinct consecutive points");
   const auto closed = plane_points({0, 0, 1, 0, 1, 1, 0, 0});
-  EXPECT_EQ(error_of(parameter_values(closed, Parameterization::chord_length, true)),
+  EXPECT_EQ(error_of(parameter_values(closed, Parameterization::chord_length, Closure::closed)),
             "the last point 3 and the first point 0 coincide, chord parameters need distinct consecutive points");
   EXPECT_EQ(error_of(parameter_values(plane_points({0, 0}), Parameterization::uniform)),
             "interpolation needs at least 2 points, got 1");
@@ -154,8 +154,8 @@ RC_GTEST_PROP(ParameterValuesProperty, InvariantUnderSimilarities, ()) {
   }
   const bool closed = *rc::gen::arbitrary<bool>();
   for (const auto kind : {Parameterization::chord_length, Parameterization::centripetal}) {
-    const auto original = parameter_values(points, kind, closed);
-    const auto image = parameter_values(plane_points(moved), kind, closed);
+    const auto original = parameter_values(points, kind, closed ? Closure::closed : Closure::open);
+    const auto image = parameter_values(plane_points(moved), kind, closed ? Closure::closed : Closure::open);
     RC_PRE(original.has_value() && image.has_value());  // coincident random points are rare and refused alike
     RC_ASSERT(original->front() == 0.0 && original->back() == 1.0);
     for (std::size_t i = 0; i < original->size(); ++i) {

@@ -181,7 +181,7 @@ TEST(PointsCsv, RefusesMoreThanTheLimitOfPoints) {
   for (std::size_t i = 0; i <= tolerances::kMaxControlPoints; ++i) text += "0\n";
   EXPECT_EQ(error_of(text), "p.csv, line 10000001: more than 10000000 points, the limit for one file");
   text.resize(text.size() - 2);  // exactly the limit is accepted
-  EXPECT_EQ(parse_points_csv(text, "p.csv")->size(), tolerances::kMaxControlPoints);
+  EXPECT_EQ(parse_points_csv(text, "p.csv").value().size(), tolerances::kMaxControlPoints);
 }
 
 TEST(PointsCsv, RefusesAHugeRowWithoutStoringIt) {
@@ -252,7 +252,7 @@ TEST(PointsCsvFiles, ReadTheExamplesAndNameTheFileInErrors) {
   const auto head = read_points_csv(examples + "/head.csv");
   ASSERT_TRUE(head.has_value()) << head.error().message;
   EXPECT_EQ(head->size(), 19u);  // seed 000, Figure 3
-  EXPECT_EQ(read_points_csv(examples + "/car.csv")->size(), 26u);
+  EXPECT_EQ(read_points_csv(examples + "/car.csv").value().size(), 26u);
   const auto polygon = read_points_csv(examples + "/notebook_polygon.csv");
   EXPECT_EQ(*polygon, points(2, {0, 0, 1, 2, 2, 2, 4, 1, 4, 0}));  // seed 004
 

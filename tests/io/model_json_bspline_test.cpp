@@ -43,7 +43,8 @@ TEST(ModelJsonBSpline, ReadsTheInterfaceExample) {
           "control_points": [[0,0],[1,2],[2,2],[4,1],[4,0]]})");
   EXPECT_EQ(curve, make(3, {0, 0, 0, 0, 1, 2, 2, 2, 2}, 2, {0, 0, 1, 2, 2, 2, 4, 1, 4, 0}));
   EXPECT_FALSE(curve.is_rational());
-  EXPECT_EQ(curve_view(Model{curve}).domain(), (Interval{0.0, 2.0}));
+  const Model model{curve};
+  EXPECT_EQ(curve_view(model).domain(), (Interval{0.0, 2.0}));
 }
 
 TEST(ModelJsonBSpline, ReadsANurbsCurveInAnyFieldOrderAndDegreeWrittenAsAFloat) {

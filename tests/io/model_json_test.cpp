@@ -394,7 +394,7 @@ TEST(ModelFiles, FormatIsChosenByExtensionThenContent) {
             (folder / "b.json").string() +
                 ", line 1, column 2: syntax error while parsing value - unexpected ','; "
                 "expected end of input");
-  EXPECT_EQ(read_models_json(folder / "a.json")->size(), 1u);
+  EXPECT_EQ(read_models_json(folder / "a.json").value().size(), 1u);
 }
 
 }  // namespace

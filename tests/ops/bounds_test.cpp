@@ -78,11 +78,13 @@ void check_against_samples(CurveView curve) {
 }
 
 RC_GTEST_PROP(BoundingBox, HoldsTheSamplesAndTouchesEveryFaceOnBezierCurves, ()) {
-  check_against_samples(*test::any_bezier_curve(6));
+  const BezierCurve curve = *test::any_bezier_curve(6);
+  check_against_samples(curve);
 }
 
 RC_GTEST_PROP(BoundingBox, HoldsTheSamplesAndTouchesEveryFaceOnBSplines, ()) {
-  check_against_samples(*test::bspline_curve({.max_degree = 4}));
+  const BSplineCurve curve = *test::bspline_curve({.max_degree = 4});
+  check_against_samples(curve);
 }
 
 }  // namespace

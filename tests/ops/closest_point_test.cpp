@@ -129,7 +129,14 @@ constexpr int kOracleQueries = 100000;
 /// kOracleQueries queries: 90% uniform in the curve's box grown by half its size on
 /// every side, 10% within 1e-6 of its size from a random point of the curve.
 /// The batch answers them in one call; some are also checked one by one.
-OracleResult against_oracle(CurveView curve, std::uint64_t seed, int count = kOracleQueries) {
+OracleResult against_oracle(CurveView curve, std::uint64_t seed, int count = kOracleQueries);
+/// The same for a temporary curve (a CurveView cannot be made of one).
+template <class Kind>
+OracleResult against_oracle(const Kind& curve, std::uint64_t seed, int count = kOracleQueries) {
+  return against_oracle(CurveView(curve), seed, count);
+}
+
+OracleResult against_oracle(CurveView curve, std::uint64_t seed, int count) {
   const int d = curve.dimension();
   const test::NearestOracle oracle(curve, 4096 / static_cast<int>(breakpoints(curve).size() - 1) + 64);
   const double size = size_of(curve);

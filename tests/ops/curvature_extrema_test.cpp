@@ -49,7 +49,8 @@ BezierCurve bezier(const std::vector<std::vector<double>>& rows) {
 
 TEST(CurvatureExtrema, OfTheCubicGraphAndTheParabola) {
   // x = t, y = (t - 1/2)^3: the graph of y = s^3, s = t - 1/2.
-  const auto cubic = curvature_extrema(polynomial_graph(shifted_power(0.5, 3))).value();
+  const BezierCurve graph = polynomial_graph(shifted_power(0.5, 3));
+  const auto cubic = curvature_extrema(graph).value();
   ASSERT_EQ(cubic.size(), 2u);
   const double s = std::pow(45.0, -0.25);
   const double kappa = 6 * s / std::pow(1 + 9 * std::pow(s, 4), 1.5);
@@ -62,7 +63,8 @@ TEST(CurvatureExtrema, OfTheCubicGraphAndTheParabola) {
   // y = 3 (t - 1/2)^2: its vertex, kappa = 6.
   std::vector<double> parabola = shifted_power(0.5, 2);
   for (double& a : parabola) a *= 3.0;
-  const auto vertex = curvature_extrema(polynomial_graph(parabola)).value();
+  const BezierCurve parabola_graph = polynomial_graph(parabola);
+  const auto vertex = curvature_extrema(parabola_graph).value();
   ASSERT_EQ(vertex.size(), 1u);
   EXPECT_NEAR(vertex[0].parameter, 0.5, 1e-15);
   EXPECT_NEAR(vertex[0].curvature, 6.0, 1e-13);
@@ -108,16 +110,21 @@ TEST(CurvatureExtrema, OfTheEllipseAtJunctionsAndInsidePieces) {
 }
 
 TEST(CurvatureExtrema, NoneOnLinesAndCircles) {
-  EXPECT_TRUE(curvature_extrema(make_circle(1.0, -2.0, 5.0).value()).value().empty());
-  EXPECT_TRUE(curvature_extrema(make_arc(0.0, 0.0, 1e-3, 0.2, 2.0).value()).value().empty());
+  const BSplineCurve circle = make_circle(1.0, -2.0, 5.0).value();
+  const BSplineCurve arc = make_arc(0.0, 0.0, 1e-3, 0.2, 2.0).value();
+  EXPECT_TRUE(curvature_extrema(circle).value().empty());
+  EXPECT_TRUE(curvature_extrema(arc).value().empty());
   const ConicFrame frame{{0.0, 0.0, 1.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
-  EXPECT_TRUE(curvature_extrema(make_circle(frame, 2.0).value()).value().empty());
+  const BSplineCurve tilted = make_circle(frame, 2.0).value();
+  EXPECT_TRUE(curvature_extrema(tilted).value().empty());
   // A straight cubic with uneven speed: kappa = 0 throughout.
-  EXPECT_TRUE(curvature_extrema(bezier({{0, 0}, {1, 1}, {1.5, 1.5}, {3, 3}})).value().empty());
-  EXPECT_TRUE(cusp_parameters(make_circle(1.0, -2.0, 5.0).value()).value().empty());
-  EXPECT_EQ(curvature_extrema(bezier({{0}, {1}, {3}})).error().message,
+  const BezierCurve straight = bezier({{0, 0}, {1, 1}, {1.5, 1.5}, {3, 3}});
+  EXPECT_TRUE(curvature_extrema(straight).value().empty());
+  EXPECT_TRUE(cusp_parameters(circle).value().empty());
+  const BezierCurve on_a_line = bezier({{0}, {1}, {3}});
+  EXPECT_EQ(curvature_extrema(on_a_line).error().message,
             "curvature extrema need a curve in R^2 or more, this one lives in R^1");
-  EXPECT_EQ(cusp_parameters(bezier({{0}, {1}, {3}})).error().message,
+  EXPECT_EQ(cusp_parameters(on_a_line).error().message,
             "curvature extrema need a curve in R^2 or more, this one lives in R^1");
 }
 
@@ -131,24 +138,26 @@ TEST(Cusps, InsideAPieceAndAtJunctions) {
   const std::vector<CurvatureExtremum> around = curvature_extrema(cusp).value();
   for (const CurvatureExtremum& e : around) EXPECT_GT(std::abs(e.parameter - 0.5), 1e-3);
   // In space too.
-  EXPECT_EQ(cusp_parameters(bezier({{0, 0, 1}, {1, 1, 1}, {0, 1, 1}, {1, 0, 1}})).value().size(), 1u);
+  const BezierCurve spatial = bezier({{0, 0, 1}, {1, 1, 1}, {0, 1, 1}, {1, 0, 1}});
+  EXPECT_EQ(cusp_parameters(spatial).value().size(), 1u);
   // ((t - 1/2)^3, (t - 1/2)^5): stationary at 1/2 but the tangent goes on (order 3).
-  EXPECT_TRUE(cusp_parameters(power_curve({shifted_power(0.5, 3), shifted_power(0.5, 5)})).value().empty());
+  const BezierCurve flat_point = power_curve({shifted_power(0.5, 3), shifted_power(0.5, 5)});
+  EXPECT_TRUE(cusp_parameters(flat_point).value().empty());
   // The cusp cubic cut at its cusp: two pieces stationary at their junction.
   const auto [left, right] = split_at(cusp, 0.5).value();
-  const auto halves = cusp_parameters(PiecewiseBezierCurve::make({left, right}).value()).value();
+  const PiecewiseBezierCurve joined = PiecewiseBezierCurve::make({left, right}).value();
+  const auto halves = cusp_parameters(joined).value();
   ASSERT_EQ(halves.size(), 1u);
   EXPECT_EQ(halves[0], 1.0);
   // Two arcs meeting head-on: arriving along (1, -1), leaving along (-1, 1).
   const BezierCurve arriving = bezier({{0, 0}, {0.5, 0.5}, {1, 0}});
-  const auto spike = cusp_parameters(
-      PiecewiseBezierCurve::make({arriving, bezier({{1, 0}, {0.5, 0.5}, {0, 1}})}).value());
+  const PiecewiseBezierCurve head_on = PiecewiseBezierCurve::make({arriving, bezier({{1, 0}, {0.5, 0.5}, {0, 1}})}).value();
+  const auto spike = cusp_parameters(head_on);
   ASSERT_EQ(spike.value().size(), 1u);
   EXPECT_EQ(spike.value()[0], 1.0);
   // A sharp corner that does not turn back is not a cusp.
-  EXPECT_TRUE(cusp_parameters(PiecewiseBezierCurve::make({arriving, bezier({{1, 0}, {0.9, 0.2}, {0, 1}})}).value())
-                  .value()
-                  .empty());
+  const PiecewiseBezierCurve corner = PiecewiseBezierCurve::make({arriving, bezier({{1, 0}, {0.9, 0.2}, {0, 1}})}).value();
+  EXPECT_TRUE(cusp_parameters(corner).value().empty());
 }
 
 /// |kappa| at u (the right piece's at a junction).

@@ -214,9 +214,11 @@ TEST(Flatten, AnyKindKeepsAJointVertexOnceAndAJumpTwice) {
   const auto a = BezierCurve::make(PointArray::make({{0, 0}, {1, 1}}).value()).value();
   const auto b = BezierCurve::make(PointArray::make({{1, 1}, {2, 0}}).value()).value();
   const auto c = BezierCurve::make(PointArray::make({{5, 5}, {6, 5}}).value()).value();
-  const auto joined = flatten(PiecewiseBezierCurve::make({a, b}).value(), Tolerance{0.1}).value();
+  const PiecewiseBezierCurve ab = PiecewiseBezierCurve::make({a, b}).value();
+  const auto joined = flatten(ab, Tolerance{0.1}).value();
   EXPECT_EQ(joined.parameters, (std::vector<double>{0, 1, 2}));
-  const auto jump = flatten(PiecewiseBezierCurve::make({a, c}).value(), Tolerance{0.1}).value();
+  const PiecewiseBezierCurve ac = PiecewiseBezierCurve::make({a, c}).value();
+  const auto jump = flatten(ac, Tolerance{0.1}).value();
   EXPECT_EQ(jump.parameters, (std::vector<double>{0, 1, 1, 2}));
 }
 

@@ -25,19 +25,22 @@ using test::polynomial_graph;
 
 TEST(Inflections, OfCubicAndQuarticGraphs) {
   // y = (t - 1/2)^3 = t^3 - 1.5 t^2 + 0.75 t - 0.125: y'' = 6 (t - 1/2).
-  const auto cubic = inflection_parameters(polynomial_graph({-0.125, 0.75, -1.5, 1.0})).value();
+  const BezierCurve graph = polynomial_graph({-0.125, 0.75, -1.5, 1.0});
+  const auto cubic = inflection_parameters(graph).value();
   ASSERT_EQ(cubic.size(), 1u);
   EXPECT_NEAR(cubic[0], 0.5, 1e-15);
   // y = (t - 1/2)^4 - 0.05 (t - 1/2)^2: y'' = 12 (t - 1/2)^2 - 0.1, zero at 1/2 +- sqrt(0.1 / 12).
   const double c = 0.5;
   const std::vector<double> quartic{std::pow(c, 4) - 0.05 * c * c, -4 * std::pow(c, 3) + 0.1 * c,
                                     6 * c * c - 0.05, -4 * c, 1.0};
-  const auto two = inflection_parameters(polynomial_graph(quartic)).value();
+  const BezierCurve quartic_graph = polynomial_graph(quartic);
+  const auto two = inflection_parameters(quartic_graph).value();
   ASSERT_EQ(two.size(), 2u);
   EXPECT_NEAR(two[0], 0.5 - std::sqrt(0.1 / 12), 1e-13);
   EXPECT_NEAR(two[1], 0.5 + std::sqrt(0.1 / 12), 1e-13);
   // y = (t - 1/2)^4: y'' = 12 (t - 1/2)^2 touches zero: a flat point, no inflection.
-  EXPECT_TRUE(inflection_parameters(polynomial_graph({0.0625, -0.5, 1.5, -2.0, 1.0})).value().empty());
+  const BezierCurve convex = polynomial_graph({0.0625, -0.5, 1.5, -2.0, 1.0});
+  EXPECT_TRUE(inflection_parameters(convex).value().empty());
 }
 
 TEST(Inflections, OnEveryKindAndNoneOnTheCircle) {
@@ -49,10 +52,10 @@ TEST(Inflections, OnEveryKindAndNoneOnTheCircle) {
   ASSERT_EQ(both.size(), 2u);
   EXPECT_NEAR(both[0], 0.5, 1e-15);
   EXPECT_NEAR(both[1], 1.5, 1e-15);
-  EXPECT_TRUE(inflection_parameters(make_circle(0.0, 0.0, 2.0).value()).value().empty());
-  EXPECT_TRUE(inflection_parameters(BezierCurve::make(PointArray::make({{0, 0}, {1, 1}}).value()).value())
-                  .value()
-                  .empty());
+  const BSplineCurve circle = make_circle(0.0, 0.0, 2.0).value();
+  EXPECT_TRUE(inflection_parameters(circle).value().empty());
+  const BezierCurve segment = BezierCurve::make(PointArray::make({{0, 0}, {1, 1}}).value()).value();
+  EXPECT_TRUE(inflection_parameters(segment).value().empty());
   const auto space = BezierCurve::make(PointArray::make({{0, 0, 0}, {1, 1, 1}, {2, 0, 1}}).value()).value();
   EXPECT_EQ(inflection_parameters(space).error().message, "inflections need a plane curve, this one lives in R^3");
 }

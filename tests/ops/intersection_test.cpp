@@ -31,7 +31,10 @@ BezierCurve bezier(const std::vector<std::vector<double>>& rows) {
   return BezierCurve::make(PointArray::make(rows).value()).value();
 }
 
-std::vector<CurveIntersection> between(CurveView a, CurveView b) {
+/// Both curves by reference, so a test may pass temporaries (a CurveView
+/// cannot be made of one: docs/cpp.md, "Lifetimes").
+template <class A, class B>
+std::vector<CurveIntersection> between(const A& a, const B& b) {
   return intersections(a, b, default_intersection_tolerance(a, b)).value();
 }
 
@@ -134,15 +137,18 @@ TEST(Intersections, ReportEndsAndKnotsOnce) {
 TEST(SelfIntersections, OfALoopAndNoneAtACusp) {
   // (0,0),(2,2),(-1,2),(1,0): y = 6 t (1 - t) is symmetric, and x(t) = x(1 - t)
   // at t = (5 - sqrt 15) / 10.
-  const auto loop = self_intersections(bezier({{0, 0}, {2, 2}, {-1, 2}, {1, 0}}), Tolerance{1e-9}).value();
+  const BezierCurve looped = bezier({{0, 0}, {2, 2}, {-1, 2}, {1, 0}});
+  const auto loop = self_intersections(looped, Tolerance{1e-9}).value();
   ASSERT_EQ(loop.size(), 1u);
   const double s = (5 - std::sqrt(15.0)) / 10;
   EXPECT_LE(ulps(loop[0].a.lower, s), 4.0);
   EXPECT_LE(ulps(loop[0].b.lower, 1 - s), 4.0);
   // (0,0),(1,1),(0,1),(1,0) has a cusp at t = 1/2 (x' = 3 (1 - 2t)^2, y' = 3 (1 - 2t)): no crossing.
-  EXPECT_TRUE(self_intersections(bezier({{0, 0}, {1, 1}, {0, 1}, {1, 0}}), Tolerance{1e-9}).value().empty());
+  const BezierCurve crossed_hull = bezier({{0, 0}, {1, 1}, {0, 1}, {1, 0}});
+  EXPECT_TRUE(self_intersections(crossed_hull, Tolerance{1e-9}).value().empty());
   // A closed circle has no self-intersection: neither its seam nor its knots.
-  EXPECT_TRUE(self_intersections(make_circle(0.0, 0.0, 1.0).value(), Tolerance{1e-9}).value().empty());
+  const BSplineCurve circle = make_circle(0.0, 0.0, 1.0).value();
+  EXPECT_TRUE(self_intersections(circle, Tolerance{1e-9}).value().empty());
   // A figure eight of two pieces crossing at (0, 0).
   const PiecewiseBezierCurve eight =
       PiecewiseBezierCurve::make({bezier({{0, 0}, {2, 2}, {2, -2}, {0, 0}}), bezier({{0, 0}, {-2, 2}, {-2, -2}, {0, 0}})})
@@ -196,7 +202,8 @@ TEST(SpaceIntersections, CrossingsMeetingsWithinTheToleranceAndNearMisses) {
   EXPECT_EQ(touching[0].multiplicity, 2);
   EXPECT_NEAR(touching[0].a.lower, 0.5, 1e-4);
   // A line in R^3 and a curve in R^2 are refused.
-  EXPECT_FALSE(intersections(cubic, bezier({{0, 0}, {1, 1}}), Tolerance{1e-9}));
+  const BezierCurve planar = bezier({{0, 0}, {1, 1}});
+  EXPECT_FALSE(intersections(cubic, planar, Tolerance{1e-9}));
 }
 
 TEST(SpaceIntersections, OverlapsAndKnots) {

@@ -96,7 +96,10 @@ void against_oracle(SurfaceView surface, std::uint64_t seed) {
   EXPECT_EQ(missed, 0);
 }
 
-TEST(PointInversionOracle, BicubicPatch) { against_oracle(test::bicubic_patch(), 21); }
+TEST(PointInversionOracle, BicubicPatch) {
+  const BezierSurface patch = test::bicubic_patch();
+  against_oracle(patch, 21);
+}
 
 TEST(PointInversionOracle, WavyRationalBSplineSurface) {
   // A bicubic NURBS surface on 5 x 5 spans: a height field with random

@@ -104,7 +104,7 @@ TEST(BernsteinGraph, Errors) {
   EXPECT_FALSE(bernstein_graph_polyline(5, 2, Tolerance{0.0}));
   EXPECT_FALSE(bernstein_graph_polyline(5, 2, Tolerance{1e-16}));  // below the vertices' rounding
   // A line needs one segment.
-  EXPECT_EQ(bernstein_graph_polyline(1, 0, Tolerance{1e-9})->size(), 2u);
+  EXPECT_EQ(bernstein_graph_polyline(1, 0, Tolerance{1e-9}).value().size(), 2u);
 }
 
 }  // namespace

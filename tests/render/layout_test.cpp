@@ -160,7 +160,7 @@ TEST(Layout, ProgressRisesToOneOverEveryPanelsCurves) {
   EXPECT_EQ(seen.front(), 0.0);
   EXPECT_EQ(seen.back(), 1.0);
   for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_LE(seen[i - 1], seen[i]) << i;
-  EXPECT_EQ(scene->shapes.size(), layout(figure)->shapes.size());
+  EXPECT_EQ(scene->shapes.size(), layout(figure).value().shapes.size());
 }
 
 TEST(Layout, FixedAndLogarithmicRanges) {
@@ -269,12 +269,12 @@ TEST(Plots, BernsteinGraphMatchesBernsteinAll) {
 
 TEST(Plots, BernsteinBasisPanel) {
   // Drawn from the closed form (bernstein_graph.hpp), not as Bézier curves of degree n.
-  EXPECT_EQ(bernstein_basis_panel(20)->bernstein_graphs.size(), 21u);
-  EXPECT_TRUE(bernstein_basis_panel(20)->curves.empty());
-  EXPECT_EQ(bernstein_basis_panel(20, true)->bernstein_graphs.size(), 19u);
-  EXPECT_EQ(bernstein_basis_panel(20, true)->bernstein_graphs.front().index, 1);
+  EXPECT_EQ(bernstein_basis_panel(20).value().bernstein_graphs.size(), 21u);
+  EXPECT_TRUE(bernstein_basis_panel(20).value().curves.empty());
+  EXPECT_EQ(bernstein_basis_panel(20, BasisEnds::omitted).value().bernstein_graphs.size(), 19u);
+  EXPECT_EQ(bernstein_basis_panel(20, BasisEnds::omitted).value().bernstein_graphs.front().index, 1);
   EXPECT_FALSE(bernstein_basis_panel(0));
-  EXPECT_FALSE(bernstein_basis_panel(1, true));
+  EXPECT_FALSE(bernstein_basis_panel(1, BasisEnds::omitted));
   EXPECT_FALSE(bernstein_basis_panel(tolerances::kMaxPlottedBasisDegree + 1));
 }
 

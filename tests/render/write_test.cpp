@@ -129,9 +129,9 @@ TEST_F(WriteTest, LayoutErrorsWriteNothing) {
 
 TEST(FigureDocument, EncodesEveryFormatInMemory) {
   const Figure figure = small_figure(320, 240);
-  EXPECT_EQ(figure_document(figure, FigureFormat::svg)->substr(0, 5), "<?xml");
-  EXPECT_EQ(figure_document(figure, FigureFormat::png)->substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
-  EXPECT_EQ(figure_document(figure, FigureFormat::pdf)->substr(0, 5), "%PDF-");
+  EXPECT_EQ(figure_document(figure, FigureFormat::svg).value().substr(0, 5), "<?xml");
+  EXPECT_EQ(figure_document(figure, FigureFormat::png).value().substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(figure_document(figure, FigureFormat::pdf).value().substr(0, 5), "%PDF-");
   EXPECT_FALSE(figure_document(Figure{}, FigureFormat::png));  // layout error: no panel
 }
 

@@ -110,7 +110,8 @@ TEST(BSplineSurface, HomogeneousNetRoundTrips) {
   EXPECT_EQ(back, s);
   // A polynomial surface's homogeneous net has weight 1.
   const auto plain = *BSplineSurface::make(2, 1, {0, 0, 0, 1, 1, 1}, {0, 0, 0.25, 0.5, 1, 1}, grid_net(3, 4));
-  EXPECT_EQ(homogeneous_net(plain)(1, 3)[3], 1.0);
+  const ControlNet homogeneous = homogeneous_net(plain);
+  EXPECT_EQ(homogeneous(1, 3)[3], 1.0);
 }
 
 RC_GTEST_PROP(BSplineSurfaceProperties, TransposeExchangesTheParameters, ()) {

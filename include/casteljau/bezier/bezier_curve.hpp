@@ -4,6 +4,7 @@
 // point: C(t) = sum w_k P_k B_{n,k}(t) / sum w_k B_{n,k}(t), t in [0,1].
 
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "casteljau/core/expected.hpp"
@@ -32,10 +33,12 @@ class BezierCurve {
   int degree() const noexcept { return static_cast<int>(control_points_.size()) - 1; }
   /// d, the dimension of the space the curve lives in.
   int dimension() const noexcept { return control_points_.dimension(); }
-  /// P_0 .. P_n.
-  const PointArray& control_points() const noexcept { return control_points_; }
-  /// w_0 .. w_n, empty for a polynomial curve.
-  std::span<const double> weights() const noexcept { return weights_; }
+  /// P_0 .. P_n (moved out of a temporary curve, not referenced).
+  const PointArray& control_points() const& noexcept { return control_points_; }
+  PointArray control_points() && noexcept { return std::move(control_points_); }
+  /// w_0 .. w_n, empty for a polynomial curve (a view: deleted on a temporary).
+  std::span<const double> weights() const& noexcept { return weights_; }
+  std::span<const double> weights() const&& = delete;  // a view into a temporary dangles
   /// True when the curve carries weights (even if they are all equal).
   bool is_rational() const noexcept { return !weights_.empty(); }
   /// [0, 1], the parameter domain (the curve concept's domain(), curves/curve.hpp).

@@ -23,7 +23,8 @@ class PiecewiseBezierCurve {
   /// At least one piece, all of the same dimension ("piece 2 has dimension 3,
   /// piece 0 has 2"). Pieces need not join: continuity is a property to check.
   static Expected<PiecewiseBezierCurve> make(std::vector<BezierCurve> pieces);
-  const std::vector<BezierCurve>& pieces() const noexcept { return pieces_; }
+  const std::vector<BezierCurve>& pieces() const& noexcept { return pieces_; }
+  std::vector<BezierCurve> pieces() && noexcept { return std::move(pieces_); }
   int dimension() const noexcept { return pieces_.front().dimension(); }
   /// m, the number of pieces (the domain is [0, m]).
   int size() const noexcept { return static_cast<int>(pieces_.size()); }

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "casteljau/bezier/bezier_curve.hpp"
@@ -46,11 +47,14 @@ class BSplineCurve {
   /// d.
   int dimension() const noexcept { return control_points_.dimension(); }
   /// t_0 .. t_{n+p+1}.
-  std::span<const double> knots() const noexcept { return knots_; }
+  std::span<const double> knots() const& noexcept { return knots_; }
+  std::span<const double> knots() const&& = delete;  // a view into a temporary dangles
   /// P_0 .. P_n.
-  const PointArray& control_points() const noexcept { return control_points_; }
+  const PointArray& control_points() const& noexcept { return control_points_; }
+  PointArray control_points() && noexcept { return std::move(control_points_); }
   /// w_0 .. w_n, empty for a polynomial curve.
-  std::span<const double> weights() const noexcept { return weights_; }
+  std::span<const double> weights() const& noexcept { return weights_; }
+  std::span<const double> weights() const&& = delete;  // a view into a temporary dangles
   /// True when the curve carries weights (even if all equal): a NURBS curve.
   bool is_rational() const noexcept { return !weights_.empty(); }
   /// [t_p, t_{n+1}], where the basis functions sum to one.

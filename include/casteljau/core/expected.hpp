@@ -104,12 +104,19 @@ class [[nodiscard]] Expected {
     if (!has_value()) detail::expected_misuse("Expected::value() on an error", std::get_if<1>(&state_));
     return *std::get_if<0>(&state_);
   }
-  T&& value() && { return std::move(value()); }
+  /// On a temporary, the value moved out (not a reference into the dying
+  /// Expected): `const auto& c = *make(...)` and `for (auto p : *make(...))`
+  /// keep it alive instead of dangling.
+  T value() && { return std::move(value()); }
   const T& operator*() const& { return value(); }
   T& operator*() & { return value(); }
-  T&& operator*() && { return std::move(value()); }
-  const T* operator->() const { return &value(); }
-  T* operator->() { return &value(); }
+  T operator*() && { return std::move(value()); }
+  /// Member access on a named Expected. Deleted on a temporary: the pointer
+  /// would outlive it (`for (double x : make(...)->coordinates())` read freed
+  /// memory); name the result, or write make(...).value().member().
+  const T* operator->() const& { return &value(); }
+  T* operator->() & { return &value(); }
+  const T* operator->() const&& = delete;  // dangles: name the result, or .value()
 
   /// The error; on a value, aborts.
   const Error& error() const {

@@ -18,6 +18,8 @@
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/core/interval.hpp"
 #include "casteljau/core/point_array.hpp"
+#include "casteljau/core/precondition.hpp"
+#include "casteljau/core/vec.hpp"
 
 namespace casteljau {
 
@@ -29,6 +31,12 @@ class CurveView {
   CurveView(const BezierCurve& curve) noexcept : curve_(&curve) {}           // NOLINT: implicit by design
   CurveView(const PiecewiseBezierCurve& curve) noexcept : curve_(&curve) {}  // NOLINT
   CurveView(const BSplineCurve& curve) noexcept : curve_(&curve) {}          // NOLINT
+  /// Never of a temporary: the view would outlive it. Name the curve first
+  /// (`auto c = *BezierCurve::make(...); arc_length(c, ...)`); docs/cpp.md,
+  /// "Lifetimes", says why even the safe call on a temporary is refused.
+  CurveView(const BezierCurve&&) = delete;  // a view of a temporary dangles: name it first
+  CurveView(const PiecewiseBezierCurve&&) = delete;  // a view of a temporary dangles: name it first
+  CurveView(const BSplineCurve&&) = delete;  // a view of a temporary dangles: name it first
 
   /// The parameter domain ([0,1] Bézier, [0,m] piecewise, [t_p, t_{n+1}] B-spline).
   Interval domain() const noexcept;
@@ -57,6 +65,14 @@ Point derivative_at(CurveView curve, double u, int order);
 std::vector<Point> derivatives_up_to(CurveView curve, double u, int max_order);
 /// The kind's batch kernels (same contracts: out has us.size() * d values).
 void points_at(CurveView curve, std::span<const double> us, std::span<double> out);
+/// P(u) and its derivative of order k as a fixed-size Vec<D>: the scalar call
+/// without the heap allocation of a Point, for code that knows the dimension
+/// (requires dimension() == D, checked in every build: it sizes the result).
+/// The batch kernel on one parameter, so the same values as points_at.
+template <int D>
+Vec<D> point_at(CurveView curve, double u);
+template <int D>
+Vec<D> derivative_at(CurveView curve, double u, int order);
 std::size_t points_at_within(CurveView curve, std::span<const double> us, Interval allowed, std::span<double> out);
 void derivatives_at(CurveView curve, std::span<const double> us, int order, std::span<double> out);
 void points_and_derivatives_at(CurveView curve, std::span<const double> us, std::span<double> points,
@@ -71,5 +87,21 @@ double scale_of(CurveView curve);
 /// relative accuracies (arc length, the CLI's defaults) are fractions of.
 /// The curve lies in the box (convex hull property, weights > 0).
 double size_of(CurveView curve);
+
+template <int D>
+Vec<D> point_at(CurveView curve, double u) {
+  detail::require(curve.dimension() == D, "point_at<D>", "D must be the curve's dimension()");
+  Vec<D> point;
+  points_at(curve, std::span<const double>(&u, 1), std::span<double>(point.coordinates));
+  return point;
+}
+
+template <int D>
+Vec<D> derivative_at(CurveView curve, double u, int order) {
+  detail::require(curve.dimension() == D, "derivative_at<D>", "D must be the curve's dimension()");
+  Vec<D> derivative;
+  derivatives_at(curve, std::span<const double>(&u, 1), order, std::span<double>(derivative.coordinates));
+  return derivative;
+}
 
 }  // namespace casteljau

@@ -3,6 +3,7 @@
 // a free parameter α that sets the length of the tangents.
 
 #include "casteljau/bezier/piecewise_bezier.hpp"
+#include "casteljau/core/closure.hpp"
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/point_array.hpp"
 
@@ -17,13 +18,13 @@ namespace casteljau {
 /// global parameter (R_i, P_{i+1}, Q_{i+1} collinear, P_{i+1} the midpoint).
 /// α = 2 gives the uniform Catmull–Rom tangents (P_{i+1} − P_{i−1})/2, and at
 /// the ends the one-sided P_1 − P_0 (interpolate_catmull_rom on 0, 1, ..., m).
-/// `closed`: the natural cyclic extension (not in the seed): indices mod m+1,
+/// `Closure::closed`: the natural cyclic extension (not in the seed): indices mod m+1,
 /// so Q_i, R_i use the cyclic neighbours for every i and one more piece
 /// P_m, Q_m, R_m, P_0 closes the curve C¹ at P_0; m+1 pieces, domain [0, m+1].
 /// Errors: fewer than 2 points (3 when closed), α not finite or <= 0, a NaN
 /// coordinate, a closed set whose last point repeats the first (within
 /// tolerances::kJointRelativeGap of the scale: drop it, without_closing_duplicate). O(m d).
 Expected<PiecewiseBezierCurve> interpolate_c1_bezier(const PointArray& points, double alpha = 1.0,
-                                                     bool closed = false);
+                                                     Closure closure = Closure::open);
 
 }  // namespace casteljau

@@ -11,6 +11,7 @@
 #include <span>
 
 #include "casteljau/bspline/bspline_curve.hpp"
+#include "casteljau/core/closure.hpp"
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/point_array.hpp"
 
@@ -28,13 +29,13 @@ namespace casteljau {
 /// gives the one-sided difference T_0 = d_0, T_m = d_{m−1}; it is consistent
 /// with every parameterization (the phantom step has the length of the first
 /// step) and makes the uniform spline equal seed 000's c1-bezier with α = 2,
-/// ends included. `closed`: the neighbours are cyclic and `parameters` has
+/// ends included. `Closure::closed`: the neighbours are cyclic and `parameters` has
 /// m+2 values (t_{m+1} for the return to P_0); domain [t_0, t_{m+1}], C¹
 /// across the seam. The centripetal spline has no cusp or self-intersection
 /// inside a segment (Yuksel et al., §4). Errors: fewer than 2 points (3 when
 /// closed), parameters of the wrong count, not finite or not strictly
 /// increasing, a NaN coordinate, a closed set repeating its first point. O(m d).
 Expected<BSplineCurve> interpolate_catmull_rom(const PointArray& points, std::span<const double> parameters,
-                                               bool closed = false);
+                                               Closure closure = Closure::open);
 
 }  // namespace casteljau

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "casteljau/core/closure.hpp"
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/point_array.hpp"
 
@@ -27,14 +28,14 @@ Expected<Parameterization> parameterization_from_name(std::string_view name);
 
 /// Normalized parameter values 0 = t_0 < t_1 < ... = 1 for the points, with
 /// steps proportional to |P_{i+1} − P_i|^e (The NURBS Book eq. 9.4–9.6).
-/// `closed`: one more value, for the closing step from P_m back to P_0
+/// `Closure::closed`: one more value, for the closing step from P_m back to P_0
 /// (m+2 values, the last one 1); a closed set whose last point repeats the
 /// first must be passed through without_closing_duplicate first.
 /// Errors: fewer than 2 points; a zero step under chord_length or centripetal
 /// ("points 3 and 4 coincide, chord-length parameters need distinct
 /// consecutive points"); the closing step likewise. O(m d).
 Expected<std::vector<double>> parameter_values(const PointArray& points, Parameterization kind,
-                                               bool closed = false);
+                                               Closure closure = Closure::open);
 
 /// The first coordinate of each point as its parameter (interpolation of a
 /// function y(x) whose graph is the curve (x, y(x))): x must increase

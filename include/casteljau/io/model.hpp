@@ -42,12 +42,14 @@ bool is_surface(const Model& model);
 /// model must outlive the view. All surface evaluation of the front ends goes
 /// through it: domain_u/domain_v, point_at, partial_derivative_at, grids.
 SurfaceView surface_view(const Model& model);
+SurfaceView surface_view(const Model&& model) = delete;  // a view of a temporary dangles: name it first
 
 /// A non-owning view of a curve model (asserts !is_surface(model)); the
 /// model must outlive the view. All curve work of the front ends goes through
 /// it and the functions written on it (curves/curve_view.hpp): domain(),
 /// point_at, derivative_at, points_at_within, differential geometry, flatten.
 CurveView curve_view(const Model& model);
+CurveView curve_view(const Model&& model) = delete;  // a view of a temporary dangles: name it first
 
 /// The dimension of the space the model (curve or surface) lives in.
 int dimension_of(const Model& model);

@@ -25,6 +25,7 @@
 // curve kind; W7 in bench/ measures it beside OpenCASCADE and kurbo.
 
 #include <cstddef>
+#include <initializer_list>
 #include <span>
 #include <vector>
 
@@ -50,6 +51,10 @@ struct NearestPoint {
 /// Errors: a query of another dimension than the curve, or a coordinate not
 /// finite or beyond tolerances::kMaxCoordinate (the message names it).
 Expected<NearestPoint> closest_point(CurveView curve, std::span<const double> query);
+/// The same with the query written in braces: closest_point(curve, {1.0, 2.0}).
+inline Expected<NearestPoint> closest_point(CurveView curve, std::initializer_list<double> query) {
+  return closest_point(curve, std::span<const double>(query.begin(), query.size()));
+}
 
 /// Every local minimum of the distance from q along the curve, the global one
 /// first, then by increasing parameter. An end of the domain counts when the

@@ -21,6 +21,7 @@
 // times denser on a bicubic patch and a wavy NURBS surface of 5 x 5 spans,
 // and against closed forms on the NURBS sphere (poles) and torus (seams).
 
+#include <initializer_list>
 #include <span>
 
 #include "casteljau/core/expected.hpp"
@@ -41,5 +42,9 @@ struct SurfaceNearestPoint {
 /// Errors: a query of another dimension than the surface, or a coordinate not
 /// finite or beyond tolerances::kMaxCoordinate.
 Expected<SurfaceNearestPoint> closest_point(SurfaceView surface, std::span<const double> query);
+/// The same with the query written in braces: closest_point(sphere, {2.0, 0.0, 0.0}).
+inline Expected<SurfaceNearestPoint> closest_point(SurfaceView surface, std::initializer_list<double> query) {
+  return closest_point(surface, std::span<const double>(query.begin(), query.size()));
+}
 
 }  // namespace casteljau

@@ -13,6 +13,8 @@
 // refused up front, from an estimate of the cells each patch needs.
 // See docs/surfaces.md for the method and its guarantees.
 #include <span>
+#include <utility>
+
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/progress.hpp"
 #include "casteljau/core/tolerance.hpp"
@@ -36,5 +38,9 @@ namespace casteljau {
 /// count passes it), a degenerate patch that has no area to triangulate ("patch
 /// 0 is degenerate: every point of it is (1, 2, 3)", or zero area: a curve).
 Expected<TriangleMesh> tessellate(std::span<const SurfaceView> patches, Tolerance tolerance, Progress progress = {});
+/// One surface on its own: tessellate(sphere, Tolerance{1e-3}).
+inline Expected<TriangleMesh> tessellate(SurfaceView patch, Tolerance tolerance, Progress progress = {}) {
+  return tessellate(std::span<const SurfaceView>(&patch, 1), tolerance, std::move(progress));
+}
 
 }  // namespace casteljau

@@ -54,14 +54,19 @@ void add_curvature_comb(Panel& panel, CurveView plane, double length, int teeth 
 /// vertex), since this curve costs O(n^2) per evaluation, O(n^3) for the basis.
 BezierCurve bernstein_graph(int n, int k);
 
-/// A panel with B_{n,k} for k = 0..n (or k = 1..n-1 with `without_ends`),
+/// Whether a plot of the Bernstein basis draws its two end functions B_{n,0}
+/// and B_{n,n} (the notebook's plot_bernstein draws them; its second figure
+/// leaves them out to show the inner ones).
+enum class BasisEnds { included, omitted };
+
+/// A panel with B_{n,k} for k = 0..n (or k = 1..n-1 with BasisEnds::omitted),
 /// black like the notebook's plot_bernstein, as BernsteinGraphItems (drawn
 /// from their closed form, bernstein_graph.hpp). Errors: n < 1, n beyond
-/// tolerances::kMaxPlottedBasisDegree, `without_ends` with n < 2 (nothing left to draw).
-Expected<Panel> bernstein_basis_panel(int n, bool without_ends = false);
+/// tolerances::kMaxPlottedBasisDegree, the ends omitted with n < 2 (nothing left to draw).
+Expected<Panel> bernstein_basis_panel(int n, BasisEnds ends = BasisEnds::included);
 
 /// A whole figure of the basis (title "Bernstein basis, n = ...").
-Expected<Figure> bernstein_basis_figure(int n, bool without_ends = false);
+Expected<Figure> bernstein_basis_figure(int n, BasisEnds ends = BasisEnds::included);
 
 /// One input of the `plot` command: curves (model JSON, or a CSV point set
 /// read as one Bézier curve's control polygon), or a point set drawn as data:

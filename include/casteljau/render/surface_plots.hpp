@@ -55,15 +55,22 @@ struct SurfacePlotOptions {
 Status add_surface_wireframe(Panel& panel, const Model& surface, const SurfacePlotOptions& options,
                              Color color = colors::black, const std::string& label = "");
 
+/// Whether a shaded mesh shows the edges of its visible triangles.
+enum class MeshEdges { hidden, drawn };
+
+/// Whether the surface figure adds a shaded view beside the wireframe one.
+enum class Shading { none, shaded };
+
 /// Adds a triangle mesh as a shaded image: triangles sorted by their mean
 /// depth and drawn far to near (painter's algorithm), each filled with
 /// `base` scaled by Lambert's cosine law, 0.25 + 0.75 |n . l| (two-sided,
 /// n the triangle's unit normal, l a light from over the viewer's left
-/// shoulder). With `edges`, the edges of the triangles that face the viewer
+/// shoulder). With MeshEdges::drawn, the edges of the triangles that face the viewer
 /// (by the mesh's vertex normals) are drawn on top in thin dark lines, a
 /// wireframe of the tessellation without the hidden back of a closed
 /// surface. O(t log t) for t triangles.
-void add_shaded_mesh(Panel& panel, const TriangleMesh& mesh, const ViewAngles& view, Color base, bool edges = false);
+void add_shaded_mesh(Panel& panel, const TriangleMesh& mesh, const ViewAngles& view, Color base,
+                     MeshEdges edges = MeshEdges::hidden);
 
 /// The surfaces tessellated together (ops/tessellate.hpp) within
 /// `relative_tolerance` of their control points' bounding-box diagonal,
@@ -74,12 +81,12 @@ Status add_shaded_surfaces(Panel& panel, const std::vector<const Model*>& surfac
 
 /// The figure of `plot` for surface models: one panel with the iso-curves
 /// (and control nets) of every surface (black for one, the tab10 cycle for
-/// several), and with `shaded` (PNG and PDF output) a second panel on its
+/// several), and with Shading::shaded (PNG and PDF output) a second panel on its
 /// left with the shaded surfaces when all of them are in R^3 (a plane
 /// surface has nothing to shade). Errors: no surface,
 /// a source with curves or a point set (curves and surfaces are plotted
 /// separately), errors of the functions above.
 Expected<Figure> surface_plot_figure(const std::vector<PlotSource>& sources, const SurfacePlotOptions& options,
-                                     bool shaded);
+                                     Shading shading);
 
 }  // namespace casteljau::render

@@ -4,6 +4,7 @@
 // and its rational form with weights w_ij > 0 (seed 003 §III.3 and figure 6,
 // seed 001 §2; Farin ch. 14-15; The NURBS Book eq. 1.12).
 #include <span>
+#include <utility>
 #include <vector>
 #include "casteljau/core/expected.hpp"
 #include "casteljau/surfaces/bspline_surface.hpp"
@@ -25,9 +26,11 @@ class BezierSurface {
   int degree_u() const noexcept { return static_cast<int>(net_.rows()) - 1; }
   /// m = columns - 1.
   int degree_v() const noexcept { return static_cast<int>(net_.columns()) - 1; }
-  const ControlNet& control_net() const noexcept { return net_; }
+  const ControlNet& control_net() const& noexcept { return net_; }
+  ControlNet control_net() && noexcept { return std::move(net_); }
   /// w_ij row by row, empty for a polynomial patch.
-  std::span<const double> weights() const noexcept { return weights_; }
+  std::span<const double> weights() const& noexcept { return weights_; }
+  std::span<const double> weights() const&& = delete;  // a view into a temporary dangles
   bool is_rational() const noexcept { return !weights_.empty(); }
   int dimension() const noexcept { return net_.dimension(); }
 

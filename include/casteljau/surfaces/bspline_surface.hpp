@@ -14,6 +14,7 @@
 // Book §5.2, A5.3: "apply the curve algorithm to each column").
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/interval.hpp"
@@ -53,15 +54,21 @@ class BSplineSurface {
   int degree_u() const noexcept { return degree_u_; }
   int degree_v() const noexcept { return degree_v_; }
   /// s_0..s_{n+p+1} (u) or t_0..t_{m+q+1} (v).
-  std::span<const double> knots(Direction direction) const noexcept {
+  /// (Views: deleted on a temporary surface, whose knots they would outlive.)
+  std::span<const double> knots(Direction direction) const& noexcept {
     return direction == Direction::u ? std::span<const double>(knots_u_) : std::span<const double>(knots_v_);
   }
-  std::span<const double> knots_u() const noexcept { return knots_u_; }
-  std::span<const double> knots_v() const noexcept { return knots_v_; }
+  std::span<const double> knots(Direction direction) const&& = delete;  // a view into a temporary dangles
+  std::span<const double> knots_u() const& noexcept { return knots_u_; }
+  std::span<const double> knots_u() const&& = delete;  // a view into a temporary dangles
+  std::span<const double> knots_v() const& noexcept { return knots_v_; }
+  std::span<const double> knots_v() const&& = delete;  // a view into a temporary dangles
   /// The control net P_ij (i along u).
-  const ControlNet& control_net() const noexcept { return net_; }
+  const ControlNet& control_net() const& noexcept { return net_; }
+  ControlNet control_net() && noexcept { return std::move(net_); }
   /// w_ij row by row (w_ij at i*(m+1)+j), empty for a polynomial surface.
-  std::span<const double> weights() const noexcept { return weights_; }
+  std::span<const double> weights() const& noexcept { return weights_; }
+  std::span<const double> weights() const&& = delete;  // a view into a temporary dangles
   /// True when the surface carries weights: a NURBS surface.
   bool is_rational() const noexcept { return !weights_.empty(); }
   /// d.

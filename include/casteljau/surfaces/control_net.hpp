@@ -4,6 +4,7 @@
 // PointArray: P_ij is point i*(m+1) + j (model JSON's control_points[i][j]).
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/point_array.hpp"
@@ -36,10 +37,12 @@ class ControlNet {
   /// d.
   int dimension() const noexcept { return points_.dimension(); }
   /// P_ij (d coordinates).
-  std::span<const double> operator()(std::size_t i, std::size_t j) const { return points_[i * columns_ + j]; }
-  std::span<double> operator()(std::size_t i, std::size_t j) { return points_[i * columns_ + j]; }
+  std::span<const double> operator()(std::size_t i, std::size_t j) const& { return points_[i * columns_ + j]; }
+  std::span<const double> operator()(std::size_t i, std::size_t j) const&& = delete;  // would dangle
+  std::span<double> operator()(std::size_t i, std::size_t j) & { return points_[i * columns_ + j]; }
   /// All points, row by row.
-  const PointArray& points() const noexcept { return points_; }
+  const PointArray& points() const& noexcept { return points_; }
+  PointArray points() && noexcept { return std::move(points_); }
 
   friend bool operator==(const ControlNet&, const ControlNet&) = default;
 

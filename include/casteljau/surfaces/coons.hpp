@@ -8,6 +8,7 @@
 // reproduces its four boundaries.
 #include <array>
 #include <span>
+#include <utility>
 #include <vector>
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/core/expected.hpp"
@@ -34,10 +35,14 @@ class CoonsPatch {
   static Expected<CoonsPatch> make(BSplineCurve u0, BSplineCurve u1, BSplineCurve v0, BSplineCurve v1,
                                    CoonsBlending blending = CoonsBlending::linear);
   /// P(0,v), P(1,v), P(u,0), P(u,1), each on [0,1].
-  const BSplineCurve& u0() const noexcept { return u0_; }
-  const BSplineCurve& u1() const noexcept { return u1_; }
-  const BSplineCurve& v0() const noexcept { return v0_; }
-  const BSplineCurve& v1() const noexcept { return v1_; }
+  const BSplineCurve& u0() const& noexcept { return u0_; }
+  BSplineCurve u0() && noexcept { return std::move(u0_); }
+  const BSplineCurve& u1() const& noexcept { return u1_; }
+  BSplineCurve u1() && noexcept { return std::move(u1_); }
+  const BSplineCurve& v0() const& noexcept { return v0_; }
+  BSplineCurve v0() && noexcept { return std::move(v0_); }
+  const BSplineCurve& v1() const& noexcept { return v1_; }
+  BSplineCurve v1() && noexcept { return std::move(v1_); }
   CoonsBlending blending() const noexcept { return blending_; }
   int dimension() const noexcept { return u0_.dimension(); }
 

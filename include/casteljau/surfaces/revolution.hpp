@@ -3,6 +3,7 @@
 // turns around an axis on an exact circular arc (The NURBS Book §8.5,
 // Algorithm A8.1; the arcs as in nurbs/conics.hpp, A7.1), and the two
 // classic closed ones, the sphere and the torus.
+#include <initializer_list>
 #include <span>
 
 #include "casteljau/bspline/bspline_curve.hpp"
@@ -32,6 +33,12 @@ namespace casteljau {
 /// finite, <= 0 or > 2π.
 Expected<BSplineSurface> revolve(const BSplineCurve& profile, std::span<const double> axis_point,
                                  std::span<const double> axis_direction, double angle);
+/// The same with the axis written in braces: revolve(c, {0, 0, 0}, {0, 0, 1}, π).
+inline Expected<BSplineSurface> revolve(const BSplineCurve& profile, std::initializer_list<double> axis_point,
+                                        std::initializer_list<double> axis_direction, double angle) {
+  return revolve(profile, std::span<const double>(axis_point.begin(), axis_point.size()),
+                 std::span<const double>(axis_direction.begin(), axis_direction.size()), angle);
+}
 
 /// The sphere |S - center| = radius as an exact NURBS surface of degree
 /// (2, 2): the semicircle from the south pole (center - r z) over
@@ -42,6 +49,10 @@ Expected<BSplineSurface> revolve(const BSplineCurve& profile, std::span<const do
 /// S_u x S_v point outwards. Errors: centre not 3 finite coordinates,
 /// radius not finite or <= 0.
 Expected<BSplineSurface> make_sphere(std::span<const double> center, double radius);
+/// The same with the centre written in braces: make_sphere({0, 0, 0}, 1.0).
+inline Expected<BSplineSurface> make_sphere(std::initializer_list<double> center, double radius) {
+  return make_sphere(std::span<const double>(center.begin(), center.size()), radius);
+}
 
 /// The torus around the axis through `center` along `axis` (any length):
 /// the circle of radius minor_radius centred at distance major_radius from
@@ -53,5 +64,11 @@ Expected<BSplineSurface> make_sphere(std::span<const double> center, double radi
 /// coordinates, a zero axis, radii not finite or <= 0, minor >= major.
 Expected<BSplineSurface> make_torus(std::span<const double> center, std::span<const double> axis,
                                     double major_radius, double minor_radius);
+/// The same with centre and axis written in braces: make_torus({0, 0, 0}, {0, 0, 1}, 2, 1).
+inline Expected<BSplineSurface> make_torus(std::initializer_list<double> center, std::initializer_list<double> axis,
+                                           double major_radius, double minor_radius) {
+  return make_torus(std::span<const double>(center.begin(), center.size()),
+                    std::span<const double>(axis.begin(), axis.size()), major_radius, minor_radius);
+}
 
 }  // namespace casteljau

@@ -20,6 +20,11 @@ class SurfaceView {
   SurfaceView(const BSplineSurface& surface) noexcept;  // NOLINT: implicit by design
   SurfaceView(const BezierSurface& surface) noexcept;   // NOLINT
   SurfaceView(const CoonsPatch& patch) noexcept;        // NOLINT
+  /// Never of a temporary (`SurfaceView v = *make_sphere(...)` would dangle):
+  /// name the surface first (docs/cpp.md, "Lifetimes").
+  SurfaceView(const BSplineSurface&&) = delete;  // a view of a temporary dangles: name it first
+  SurfaceView(const BezierSurface&&) = delete;  // a view of a temporary dangles: name it first
+  SurfaceView(const CoonsPatch&&) = delete;  // a view of a temporary dangles: name it first
 
   /// The parameter domain in u and in v ([0,1] for Bézier and Coons patches).
   Interval domain_u() const noexcept;

@@ -1,0 +1,22 @@
+# cmake -P expect_deleted.cmake <compiler command...>: runs the command and
+# passes only when it fails with a diagnostic about a deleted function (g++:
+# "use of deleted function", clang: "call to deleted ..."), printing it.
+set(command "")
+set(after_script FALSE)
+math(EXPR last "${CMAKE_ARGC} - 1")
+foreach(i RANGE 0 ${last})
+  if(after_script)
+    list(APPEND command "${CMAKE_ARGV${i}}")
+  elseif(CMAKE_ARGV${i} MATCHES "expect_deleted\\.cmake$")
+    set(after_script TRUE)
+  endif()
+endforeach()
+execute_process(COMMAND ${command} RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output)
+if(status EQUAL 0)
+  message(FATAL_ERROR "compiled, but must not:\n${command}")
+endif()
+string(REGEX MATCH "[^\n]*(use of deleted|call to deleted|deleted function)[^\n]*" refusal "${output}")
+if(refusal STREQUAL "")
+  message(FATAL_ERROR "refused, but not for a deleted function:\n${output}")
+endif()
+message(STATUS "refused as it should be: ${refusal}")
