@@ -31,7 +31,12 @@ cmake --build "$work/build" >/dev/null || { cmake --build "$work/build" 2>&1 | g
 for source in "$work"/examples/*.cpp; do
   name=$(basename "$source" .cpp)
   (cd "$source_dir" && "$work/build/$name" >"$work/$name.out") || { cat "$work/$name.out"; fail "example $name failed"; }
-  echo "ran $name"
+  if [ -e "$work/examples/$name.expected" ]; then
+    diff -u "$work/examples/$name.expected" "$work/$name.out" || fail "example $name does not print the output its page shows"
+    echo "ran $name, its output as shown"
+  else
+    echo "ran $name"
+  fi
 done
 
 # Components: core alone (no fmt, no io), io; a component that does not exist is refused by name.
