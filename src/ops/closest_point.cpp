@@ -220,7 +220,17 @@ void search_polynomial_piece(const Prepared& prepared, std::size_t k, const doub
       while (slope[first] == 0.0) ++first;
       while (slope[last] == 0.0) --last;
       if (slope[first] < 0.0) {  // falls then rises: one minimum inside
-        const double s = rising_root(slope, m);
+        // Zero coefficients at the ends are roots of g' at a and b (C' = 0
+        // there: a control point repeated at the end, as an SVG 'S' after a
+        // line makes): divide them out, t^lead (1 - t)^trail q(t), so that
+        // the bracket holds the sign change inside instead of stopping at
+        // the end. q's coefficients are the remaining ones, rescaled to the
+        // lower degree (positive factors: the signs stay).
+        const int degree = m - 1, lead = first, trail = m - 1 - last, reduced = degree - lead - trail;
+        double stripped[kStackCoefficients];
+        for (int i = 0; i <= reduced; ++i)
+          stripped[i] = slope[lead + i] * kBinomials.c[degree][lead + i] / kBinomials.c[reduced][i];
+        const double s = rising_root(stripped, reduced + 1);
         double value = 0.0, unused = 0.0;
         value_and_slope(c, count, s, value, unused);
         search.consider(k, a + s * (b - a), value);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "casteljau/bezier/bezier_curve.hpp"
+#include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/nurbs/conics.hpp"
@@ -245,6 +246,36 @@ TEST(ClosestPoint, LocalMinimaIncludeEndsAndCorners) {
   EXPECT_EQ(far[0].parameter, 0.0);
   EXPECT_EQ(far[1].parameter, 2.0);
   EXPECT_EQ(closest_point(v, std::vector<double>{0, 5}).value().parameter, 0.0);
+}
+
+TEST(ClosestPoint, FindsPointsNextToAnEndWhereTheVelocityVanishes) {
+  // An SVG 'S' after a line repeats the start as the first control point, so
+  // C'(0) = 0 and g' = 2 (C - q).C' has a root at 0 besides the minimum: the
+  // minimum must still be found (it was not: the root at the end was taken).
+  for (const BezierCurve& curve : {bezier({{100, 100}, {100, 100}, {200, 10}, {290, 290}}),
+                                   bezier({{100, 100}, {200, 10}, {290, 290}, {290, 290}}),
+                                   bezier({{150, 150}, {150, 150}, {290, 150}})}) {
+    for (int k = 0; k <= 20; ++k) {
+      const Point q = point_at(curve, k / 20.0);
+      const NearestPoint nearest = closest_point(curve, q).value();
+      EXPECT_LE(nearest.distance, 1e-12 * 290) << k;
+    }
+  }
+}
+
+RC_GTEST_PROP(ClosestPoint, FindsEveryPointOfCurvesWithRepeatedEndControlPoints, ()) {
+  const int n = *rc::gen::inRange(2, 7);
+  std::vector<std::vector<double>> rows;
+  for (int i = 0; i <= n; ++i) rows.push_back({*rc::gen::inRange(-100, 101) * 1.0, *rc::gen::inRange(-100, 101) * 1.0});
+  const bool at_start = *rc::gen::arbitrary<bool>(), at_end = *rc::gen::arbitrary<bool>();
+  if (at_start) rows[1] = rows[0];
+  if (at_end) rows[static_cast<std::size_t>(n) - 1] = rows[static_cast<std::size_t>(n)];
+  const BezierCurve curve = bezier(rows);
+  const double size = std::max(size_of(curve), 1.0);
+  for (int k = 0; k <= 16; ++k) {
+    const Point q = point_at(curve, k / 16.0);
+    RC_ASSERT(closest_point(curve, q).value().distance <= 1e-9 * size);
+  }
 }
 
 RC_GTEST_PROP(ClosestPoint, IsNoFartherThanTheOracleOnRandomCurves, ()) {
