@@ -13,7 +13,9 @@ PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark
   librapidcheck-dev libgmp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev \
   libcairo2-dev poppler-utils emscripten python3-dev python3-numpy python3-scipy \
   python3-matplotlib python3-pytest python3-hypothesis python3-meshio \
-  pybind11-dev python3-pybind11
+  pybind11-dev python3-pybind11 chromium
+# chromium is a checker we did not write: tests/svg/ has it read SVG path data
+# (driven by npm's playwright-core, installed into tests/svg/node_modules by deps).
 # Peers measured beside casteljau by `make bench`.
 BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
   libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev \
@@ -49,6 +51,7 @@ endef
 
 deps:
 	$(call install_missing,$(PACKAGES))
+	@[ -d tests/svg/node_modules/playwright-core ] || { cd tests/svg && npm ci --no-audit --no-fund --ignore-scripts; }
 
 bench-deps: deps
 	$(call install_missing,$(BENCH_PACKAGES))

@@ -272,7 +272,11 @@ TEST(SvgPathErrors, EachMistakeNamesItsPlace) {
   EXPECT_EQ(message("M0 0 A1 1 0 2 0 1 1"),
             "path data, character 13 ('2'): expected a flag (0 or 1), 'A' takes rx ry x-axis-rotation "
             "large-arc-flag sweep-flag x y");
-  EXPECT_EQ(message("M0 0 L1,1, L2 2"), "path data, character 12 ('L'): expected a number after the comma, 'L' takes x y");
+  // A comma after the last number of a command is read past, as Chromium does.
+  EXPECT_EQ(message("M0 0 L1,1, L2 2"), "(no error)");
+  EXPECT_EQ(pieces_of(read_svg_path("M0 0 L1,1, L2 2"), 0), 2u);
+  EXPECT_EQ(message("M0 0 L1,1,,L2 2"),
+            "path data, character 11 (','): expected a command letter (M L H V C S Q T A Z, or m l h ...)");
   EXPECT_EQ(message("M0 0 Z 1 1"),
             "path data, character 8 ('1'): expected a command letter (M L H V C S Q T A Z, or m l h ...)");
   EXPECT_EQ(message("M,0 0"), "path data, character 2 (','): expected a number, 'M' takes x y");
