@@ -57,16 +57,22 @@ void polynomial_derivative(const BezierCurve& curve, double t, int k, std::span<
 
 }  // namespace
 
-Point point_at(const BezierCurve& curve, double t) {
+void point_at(const BezierCurve& curve, double t, std::span<double> out) {
   const int d = curve.dimension(), n = curve.degree();
+  detail::require(out.size() == static_cast<std::size_t>(d), "point_at", "out must hold dimension() values");
   const int width = curve.is_rational() ? d + 1 : d;
   detail::Workspace<> work;
   auto rows = work.take(static_cast<std::size_t>(n + 1) * width);
   load_rows(curve, rows, width);
   detail::de_casteljau_in_place(rows.data(), n, width, t);
-  Point point(rows.begin(), rows.begin() + d);
+  std::copy(rows.begin(), rows.begin() + d, out.begin());
   if (curve.is_rational())
-    for (double& c : point) c /= rows[d];
+    for (double& c : out) c /= rows[d];
+}
+
+Point point_at(const BezierCurve& curve, double t) {
+  Point point(static_cast<std::size_t>(curve.dimension()));
+  point_at(curve, t, point);
   return point;
 }
 

@@ -62,6 +62,11 @@ Point point_at(const PiecewiseBezierCurve& curve, double u) {
   return point_at(curve.pieces()[i], t);
 }
 
+void point_at(const PiecewiseBezierCurve& curve, double u, std::span<double> out) {
+  const auto [i, t] = locate(curve, u);
+  point_at(curve.pieces()[i], t, out);
+}
+
 Point derivative_at(const PiecewiseBezierCurve& curve, double u, int order) {
   const auto [i, t] = locate(curve, u);
   return derivative_at(curve.pieces()[i], t, order);

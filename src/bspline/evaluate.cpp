@@ -90,6 +90,12 @@ Point point_at(const BSplineCurve& curve, double u) {
   return point;
 }
 
+void point_at(const BSplineCurve& curve, double u, std::span<double> out) {
+  detail::require(out.size() == static_cast<std::size_t>(curve.dimension()), "point_at",
+                  "out must hold dimension() values");
+  point_into(curve, u, out.data());
+}
+
 Point point_at_basis_sum(const BSplineCurve& curve, double u) {
   const int p = curve.degree();
   const int d = curve.dimension();

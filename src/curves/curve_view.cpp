@@ -27,6 +27,9 @@ bool CurveView::is_rational() const noexcept {
 Point point_at(CurveView curve, double u) {
   return curve.visit([u](const auto& c) { return point_at(c, u); });
 }
+void point_at(CurveView curve, double u, std::span<double> out) {
+  curve.visit([u, out](const auto& c) { point_at(c, u, out); });
+}
 Point derivative_at(CurveView curve, double u, int order) {
   return curve.visit([=](const auto& c) { return derivative_at(c, u, order); });
 }

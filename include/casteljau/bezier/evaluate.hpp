@@ -22,6 +22,9 @@ namespace casteljau {
 /// Surfaces for CAGD", §3.1). Rational curves run it on the homogeneous points.
 /// O(n^2 d); no heap up to degree tolerances::kMaxStackDegree.
 Point point_at(const BezierCurve& curve, double t);
+/// The same point written into `out` (dimension() values, checked in every
+/// build): no allocation, the same arithmetic, so the same value bit for bit.
+void point_at(const BezierCurve& curve, double t, std::span<double> out);
 
 /// C(t) by the direct sum sum_k C(n,k) t^k (1-t)^(n-k) P_k, exactly as the seed
 /// notebook's `bezier0` computes it (float binomials, powers). Kept to show

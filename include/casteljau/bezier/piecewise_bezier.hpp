@@ -47,6 +47,8 @@ std::pair<int, double> locate(const PiecewiseBezierCurve& curve, double u);
 
 /// C(u) for u in [0, m] (de Casteljau on the piece that holds u).
 Point point_at(const PiecewiseBezierCurve& curve, double u);
+/// The same point written into `out` (dimension() values, checked in every build), without allocating.
+void point_at(const PiecewiseBezierCurve& curve, double u, std::span<double> out);
 
 /// The k-th derivative with respect to the global parameter u (= the local t).
 /// At a junction u = i, that of piece i (the one to the right); at u = m, the last piece's.

@@ -24,6 +24,8 @@ namespace casteljau {
 /// at the ends of its domain. NURBS curves run it on the homogeneous points
 /// and divide (A4.1). O(p^2 d); no heap up to degree tolerances::kMaxStackDegree.
 Point point_at(const BSplineCurve& curve, double u);
+/// The same point written into `out` (dimension() values, checked in every build), without allocating.
+void point_at(const BSplineCurve& curve, double u, std::span<double> out);
 
 /// C(u) as sum N_{i,p}(u) P_i from the basis functions (The NURBS Book A3.1,
 /// A4.1): the independent half of the differential pair with point_at.

@@ -61,6 +61,8 @@ class CurveView {
 
 /// The kind's point_at, derivative_at, derivatives_up_to (same values, bit for bit).
 Point point_at(CurveView curve, double u);
+/// The kind's point_at into `out` (dimension() values), without allocating.
+void point_at(CurveView curve, double u, std::span<double> out);
 Point derivative_at(CurveView curve, double u, int order);
 std::vector<Point> derivatives_up_to(CurveView curve, double u, int max_order);
 /// The kind's batch kernels (same contracts: out has us.size() * d values).
@@ -68,7 +70,9 @@ void points_at(CurveView curve, std::span<const double> us, std::span<double> ou
 /// P(u) and its derivative of order k as a fixed-size Vec<D>: the scalar call
 /// without the heap allocation of a Point, for code that knows the dimension
 /// (requires dimension() == D, checked in every build: it sizes the result).
-/// The batch kernel on one parameter, so the same values as points_at.
+/// The point is the scalar kernel into the Vec (point_at above), the
+/// derivative the batch kernel on one parameter: the same values as
+/// point_at and derivative_at.
 template <int D>
 Vec<D> point_at(CurveView curve, double u);
 template <int D>
@@ -92,7 +96,7 @@ template <int D>
 Vec<D> point_at(CurveView curve, double u) {
   detail::require(curve.dimension() == D, "point_at<D>", "D must be the curve's dimension()");
   Vec<D> point;
-  points_at(curve, std::span<const double>(&u, 1), std::span<double>(point.coordinates));
+  point_at(curve, u, std::span<double>(point.coordinates));
   return point;
 }
 
