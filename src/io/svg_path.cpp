@@ -50,6 +50,9 @@ Arguments arguments_of(char command) {
   }
 }
 
+/// "'A' takes rx ry ...": what an error message says a command needed.
+std::string takes(char command) { return fmt::format("'{}' takes {}", command, arguments_of(command).names); }
+
 /// Reads the data left to right; errors name the character they stop at.
 class Scanner {
  public:
@@ -86,8 +89,9 @@ class Scanner {
 
   /// number: sign? (digits ('.' digits?)? | '.' digits) exponent?, the
   /// longest such text (so "1.5.5" is 1.5 then .5, "1-2" is 1 then -2).
-  Expected<double> number(std::string_view wanted) {
-    if (!at_number()) return error(fmt::format("expected a number, {}", wanted));
+  /// `command` only names what it takes in the message of an error.
+  Expected<double> number(char command) {
+    if (!at_number()) return error(fmt::format("expected a number, {}", takes(command)));
     const std::size_t first = at_;
     if (peek() == '+' || peek() == '-') ++at_;
     while (!done() && is_digit(peek())) ++at_;
@@ -113,8 +117,9 @@ class Scanner {
   }
 
   /// flag: '0' or '1', one character, needing no separator after it.
-  Expected<bool> flag(std::string_view wanted) {
-    if (done() || (peek() != '0' && peek() != '1')) return error(fmt::format("expected a flag (0 or 1), {}", wanted));
+  Expected<bool> flag(char command) {
+    if (done() || (peek() != '0' && peek() != '1'))
+      return error(fmt::format("expected a flag (0 or 1), {}", takes(command)));
     return data_[at_++] == '1';
   }
 
@@ -278,16 +283,15 @@ Status add_arc(Builder& path, double rx, double ry, double rotation_degrees, boo
 /// One segment of `command` (its arguments read from the scanner).
 Status read_segment(Scanner& in, Builder& path, char command) {
   const Arguments wanted = arguments_of(command);
-  const std::string takes = fmt::format("'{}' takes {}", command, wanted.names);
   std::array<double, 7> value{};
   for (std::size_t i = 0; wanted.kinds[i] != '\0'; ++i) {
     if (i > 0) in.skip_separator();
     if (wanted.kinds[i] == 'f') {
-      auto flag = in.flag(takes);
+      auto flag = in.flag(command);
       if (!flag) return flag.error();
       value[i] = *flag ? 1.0 : 0.0;
     } else {
-      auto number = in.number(takes);
+      auto number = in.number(command);
       if (!number) return number.error();
       value[i] = *number;
     }
