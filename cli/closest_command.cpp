@@ -12,6 +12,7 @@
 
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/model.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/ops/closest_point.hpp"
 #include "casteljau/ops/point_inversion.hpp"
@@ -21,6 +22,7 @@ namespace casteljau::cli {
 namespace {
 
 struct ClosestOptions {
+  std::string units;
   std::string model;
   std::vector<std::string> points;
   std::string points_file;
@@ -78,7 +80,7 @@ int run_closest(const ClosestOptions& options) {
         return fail(status.error());
   }
   if (queries.empty()) return fail("closest needs query points: --point X,Y[,Z] or --points FILE.csv");
-  const auto models = read_models(options.model);
+  const auto models = read_model_file(options.model, options.units);
   if (!models) return fail(models.error());
   if (models->size() != 1)
     return fail(fmt::format("closest takes one curve; '{}' holds {} models", options.model, models->size()));
@@ -124,8 +126,11 @@ void add_closest_command(CLI::App& app, int& status) {
       "minimum, the global one first. On a surface, point inversion: query,u,v,distance,x,y,z. Queries: each "
       "--point, then the rows of --points, numbered from 0 (docs/curves.md).");
   CLI::Option* model =
-      closest->add_option("MODEL", options->model, "Model JSON with one curve or surface, or a CSV point set taken as one Bézier curve")
+      closest->add_option("MODEL", options->model,
+                          "Model JSON with one curve or surface, a CSV point set taken as one Bézier curve, or an SVG "
+                          "drawing with one subpath")
           ->required();
+  add_units_option(closest, options->units);
   closest->add_option("--point", options->points, "A query point X,Y[,Z] (repeatable)")->type_name("X,Y[,Z]");
   options->points_file_option =
       closest->add_option("--points", options->points_file, "Query points, one per CSV row")->type_name("FILE.csv");

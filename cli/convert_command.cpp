@@ -1,11 +1,15 @@
 // casteljau convert: a model file rewritten in another representation
-// (docs/cli.md, "convert"). This version converts between the curve kinds of
-// model JSON; the exchange formats of the interface (svg, dxf, iges, gcode,
-// meshes) are refused as not supported yet. The output is built in memory and
+// (docs/cli.md, "convert"): the curve kinds of model JSON, and SVG drawings
+// (io/svg_writer.hpp). dxf, iges and step are refused as not supported yet;
+// meshes are tessellate's, G-code gcode's. The output is built in memory and
 // written atomically: on bad input nothing is written.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <string>
 #include <variant>
 #include <vector>
@@ -13,7 +17,10 @@
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
+#include "casteljau/io/svg_drawing.hpp"
+#include "casteljau/io/svg_writer.hpp"
 #include "commands.hpp"
 
 namespace casteljau::cli {
@@ -23,6 +30,9 @@ struct ConvertOptions {
   std::string model;
   std::string format;
   std::string output;
+  std::string units;
+  std::string tolerance;
+  const CLI::Option* tolerance_option = nullptr;
 };
 
 /// std::visit with one lambda per alternative.
@@ -46,23 +56,103 @@ Model to_bezier_pieces_model(const Model& model) {
       model);
 }
 
+/// The drawing's size: the diagonal of the box of every control point.
+double drawing_size(const std::vector<SvgCurve>& curves) {
+  double lower[2] = {0, 0}, upper[2] = {0, 0};
+  bool first = true;
+  for (const SvgCurve& curve : curves)
+    for (const BezierCurve& piece : curve.curve.pieces())
+      for (const auto p : piece.control_points())
+        for (int k = 0; k < 2; ++k) {
+          lower[k] = first ? p[k] : std::min(lower[k], p[k]);
+          upper[k] = first ? p[k] : std::max(upper[k], p[k]);
+          if (k == 1) first = false;
+        }
+  return std::hypot(upper[0] - lower[0], upper[1] - lower[1]);
+}
+
+/// --to svg: the curves of MODEL as an SVG drawing. A drawing read from an
+/// SVG file keeps its elements' ids, fill rules and stroke widths; curves
+/// from model JSON or CSV get a stroke of 1/500 of the drawing's size.
+int convert_to_svg(const ConvertOptions& options) {
+  std::optional<double> tolerance;
+  if (given(options.tolerance_option)) {
+    auto number = number_option("--tolerance", options.tolerance);
+    if (!number) return fail(number.error());
+    if (!(*number > 0.0)) return fail(fmt::format("--tolerance: {} is not a distance > 0", options.tolerance));
+    tolerance = *number;
+  }
+  std::vector<SvgCurve> curves;
+  if (lowercase_extension(options.model) == ".svg") {
+    const DrawingUnits units = options.units == "mm" ? DrawingUnits::millimetres : DrawingUnits::user;
+    if (!options.units.empty() && options.units != "mm" && options.units != "user")
+      return fail(fmt::format("--units: '{}' is not user or mm", options.units.substr(0, 40)));
+    auto drawing = read_svg_drawing(options.model, units);
+    if (!drawing) return fail(drawing.error());
+    if (!drawing->problems.empty()) return fail(drawing->problems.front());
+    curves = std::move(drawing->curves);
+  } else {
+    const auto models = read_model_file(options.model, options.units);
+    if (!models) return fail(models.error());
+    for (std::size_t m = 0; m < models->size(); ++m) {
+      const Model& model = (*models)[m];
+      const std::string name = model_name(*models, m, options.model);
+      if (is_surface(model))
+        return fail(fmt::format("--to svg: {} is a surface; surfaces go to iges and step", name));
+      if (dimension_of(model) != 2)
+        return fail(fmt::format("--to svg: {} lives in R^{}, SVG drawings are plane", name, dimension_of(model)));
+      SvgCurve curve{std::get<PiecewiseBezierCurve>(to_bezier_pieces_model(model)), false, "", "", 0,
+                     FillRule::nonzero, 1.0};
+      const auto& pieces = curve.curve.pieces();
+      const auto start = pieces.front().control_points()[0];
+      const auto& last = pieces.back().control_points();
+      const auto end = last[last.size() - 1];
+      curve.closed = std::equal(start.begin(), start.end(), end.begin());
+      curves.push_back(std::move(curve));
+    }
+    const double size = drawing_size(curves);
+    for (SvgCurve& curve : curves) curve.stroke_width = size > 0.0 ? size / 500.0 : 1.0;
+  }
+  const double size = drawing_size(curves);
+  const double distance = tolerance.value_or(1e-6 * (size > 0.0 ? size : 1.0));
+  auto written = write_svg_drawing(curves, Tolerance{distance});
+  if (!written) return fail(with_context(written.error(), "--to svg"));
+  if (int status = write_output(options.output, written->text); status != 0) return status;
+  std::string summary = fmt::format("convert: {} curve{} to SVG", curves.size(), curves.size() == 1 ? "" : "s");
+  if (written->approximated_pieces > 0)
+    summary += fmt::format(", {} rational or higher-degree piece{} replaced by {} cubics within {:.3g} "
+                           "(--tolerance {:.3g})",
+                           written->approximated_pieces, written->approximated_pieces == 1 ? "" : "s",
+                           written->cubics, written->deviation_bound, distance);
+  else
+    summary += ", every piece exact";
+  return write_summary(options.output, summary);
+}
+
 int run_convert(const ConvertOptions& options) {
   // --- the target format first: a typo should not wait for a large file ---
   const std::string& format = options.format;
   const bool to_pieces = format == "bezier-pieces", to_spline = format == "bspline", as_json = format == "json";
+  if (format == "svg") return convert_to_svg(options);
   if (!to_pieces && !to_spline && !as_json) {
-    for (const char* later : {"svg", "dxf", "iges", "gcode", "obj", "stl", "ply"}) {
+    for (const char* later : {"dxf", "iges", "step"}) {
       if (format == later) {
         return fail(fmt::format("--to {}: this format is not supported yet by this version of casteljau "
-                                "(supported: bezier-pieces, bspline, json)",
+                                "(supported: bezier-pieces, bspline, json, svg)",
                                 format));
       }
     }
-    return fail(fmt::format("--to '{}': unknown format (supported: bezier-pieces, bspline, json)",
+    for (const auto& [other, command] : {std::pair{"gcode", "casteljau gcode"}, std::pair{"obj", "casteljau tessellate"},
+                                         std::pair{"stl", "casteljau tessellate"}, std::pair{"ply", "casteljau tessellate"}}) {
+      if (format == other)
+        return fail(fmt::format("--to {}: not a conversion of curves; {} writes it", format, command));
+    }
+    return fail(fmt::format("--to '{}': unknown format (supported: bezier-pieces, bspline, json, svg)",
                             format.substr(0, 60)));
   }
+  if (given(options.tolerance_option)) return fail("--tolerance applies to --to svg (the cubics' distance)");
 
-  const auto models = read_models(options.model);
+  const auto models = read_model_file(options.model, options.units);
   if (!models) return fail(models.error());
   std::vector<Model> converted;
   converted.reserve(models->size());
@@ -93,18 +183,23 @@ void add_convert_command(CLI::App& app, int& status) {
   auto options = std::make_shared<ConvertOptions>();
   CLI::App* convert = app.add_subcommand(
       "convert",
-      "Rewrite the curves of MODEL in another representation, as model JSON: bezier-pieces (a piecewise_bezier "
+      "Rewrite the curves of MODEL in another representation: as model JSON, bezier-pieces (a piecewise_bezier "
       "model: a B-spline's Bézier pieces, each then on [i, i+1]), bspline (a bspline model: a Bézier curve on "
-      "clamped knots, a piecewise curve with its joints as knots of multiplicity p), json (the models as read). "
-      "svg, dxf, iges, gcode and meshes are not supported yet.");
-  CLI::Option* model = convert
-                           ->add_option("MODEL", options->model,
-                                        "Model JSON, or a CSV point set taken as the control polygon of one "
-                                        "Bézier curve")
-                           ->required();
-  convert->add_option("--to", options->format, "The target: bezier-pieces, bspline or json")
+      "clamped knots, a piecewise curve with its joints as knots of multiplicity p), json (the models as read); or "
+      "svg, an SVG drawing of plane curves: lines, quadratics and cubics exactly, other pieces (rational, degree > "
+      "3) as cubics within --tolerance, which the summary line and the file state; an SVG input keeps its ids, "
+      "fill rules and stroke widths. dxf, iges and step are not supported yet.");
+  CLI::Option* model = convert->add_option("MODEL", options->model, kModelFileHelp)->required();
+  convert->add_option("--to", options->format, "The target: bezier-pieces, bspline, json or svg")
       ->type_name("FORMAT")
       ->required();
+  options->tolerance_option =
+      convert
+          ->add_option("--tolerance", options->tolerance,
+                       "--to svg: the largest distance of the cubics from pieces SVG cannot hold (default 1e-6 of "
+                       "the drawing's size, the diagonal of its control points' box)")
+          ->type_name("E");
+  add_units_option(convert, options->units);
   CLI::Option* output = convert->add_option("-o,--output", options->output, kOutputHelp)->type_name("FILE");
   set_action(convert, status, {{model}, output}, [options] { return run_convert(*options); });
 }

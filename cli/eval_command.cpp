@@ -14,6 +14,7 @@
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/ops/arc_length.hpp"
 #include "commands.hpp"
@@ -22,6 +23,7 @@ namespace casteljau::cli {
 namespace {
 
 struct EvalOptions {
+  std::string units;
   std::string model;
   std::vector<std::string> at;
   std::string params;
@@ -120,7 +122,7 @@ int run_eval(const EvalOptions& options) {
   }
 
   // --- inputs --------------------------------------------------------------
-  const auto models = read_models(options.model);
+  const auto models = read_model_file(options.model, options.units);
   if (!models) return fail(models.error());
   bool any_curve = false, any_surface = false;
   for (const Model& model : *models) (is_surface(model) ? any_surface : any_curve) = true;
@@ -307,9 +309,11 @@ void add_eval_command(CLI::App& app, int& status) {
       "models, each is evaluated in order at the same parameters and the lines follow one another.");
   CLI::Option* model =
       eval->add_option("MODEL", options->model,
-                       "Model JSON, or a CSV point set taken as the control polygon of one Bézier curve (by extension "
-                       ".json/.csv, otherwise JSON when the text starts with '{')")
+                       "Model JSON, a CSV point set taken as the control polygon of one Bézier curve, or an SVG "
+                       "drawing, one curve per subpath (by extension .json/.csv/.svg, otherwise JSON when the text "
+                       "starts with '{', SVG with '<')")
           ->required();
+  add_units_option(eval, options->units);
   eval->add_option("--at", options->at,
                    "Evaluate at parameter T of a curve, or u,v of a surface (repeat for several; in the order given)")
       ->type_name("T|u,v")

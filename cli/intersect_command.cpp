@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "casteljau/io/model.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/ops/intersection.hpp"
 #include "commands.hpp"
@@ -18,6 +19,7 @@ namespace casteljau::cli {
 namespace {
 
 struct IntersectOptions {
+  std::string units;
   std::string first;
   std::string second;
   std::string tolerance;
@@ -27,8 +29,8 @@ struct IntersectOptions {
 };
 
 /// The one curve of a model file (errors name the file).
-Expected<Model> one_curve(const std::string& path) {
-  auto models = read_models(path);
+Expected<Model> one_curve(const std::string& path, const std::string& units) {
+  auto models = read_model_file(path, units);
   if (!models) return models.error();
   if (models->size() != 1) return Error{fmt::format("intersect takes one curve per file; '{}' holds {} models", path, models->size())};
   if (is_surface(models->front()))
@@ -67,12 +69,12 @@ int run_intersect(const IntersectOptions& options) {
     if (!(*value > 0.0)) return fail(fmt::format("--tolerance: {} is not > 0", *value));
     tolerance = *value;
   }
-  auto first = one_curve(options.first);
+  auto first = one_curve(options.first, options.units);
   if (!first) return fail(first.error());
   const CurveView a = curve_view(*first);
   Expected<std::vector<CurveIntersection>> found = Error{};
   if (given(options.second_option)) {
-    auto second = one_curve(options.second);
+    auto second = one_curve(options.second, options.units);
     if (!second) return fail(second.error());
     const CurveView b = curve_view(*second);
     found = intersections(a, b, tolerance ? Tolerance{*tolerance} : default_intersection_tolerance(a, b));
@@ -94,7 +96,8 @@ void add_intersect_command(CLI::App& app, int& status) {
       "{\"intersections\": [...]} sorted by the parameter on A: each transversal, tangent (with its multiplicity) "
       "or overlap (the two parameter intervals) once, end points and knots included. Curves within --tolerance "
       "(default 1e-9 of the larger curve's size) count as meeting (docs/curves.md).");
-  CLI::Option* first = intersect->add_option("A", options->first, "Model JSON with one curve (or a CSV polygon)")->required();
+  CLI::Option* first = intersect->add_option("A", options->first, "Model JSON with one curve (or a CSV polygon, or an SVG drawing with one subpath)")->required();
+  add_units_option(intersect, options->units);
   options->second_option = intersect->add_option("B", options->second, "The second curve (omit for self-intersections of A)");
   options->tolerance_option =
       intersect->add_option("--tolerance", options->tolerance, "Distance within which curves meet (default 1e-9 x size)")

@@ -11,6 +11,7 @@
 
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/model.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/ops/arc_length.hpp"
 #include "commands.hpp"
@@ -24,6 +25,7 @@ struct LengthOptions {
   std::string to;
   std::string tolerance;
   std::string output;
+  std::string units;
   const CLI::Option* from_option = nullptr;
   const CLI::Option* to_option = nullptr;
   const CLI::Option* tolerance_option = nullptr;
@@ -39,7 +41,7 @@ int run_length(const LengthOptions& options) {
     if (!number) return fail(number.error());
     *value = *number;
   }
-  const auto models = read_models(options.model);
+  const auto models = read_model_file(options.model, options.units);
   if (!models) return fail(models.error());
   std::string out;
   for (std::size_t m = 0; m < models->size(); ++m) {
@@ -69,7 +71,8 @@ void add_length_command(CLI::App& app, int& status) {
       "Gauss-Kronrod quadrature on the curve's Bezier pieces: the tolerance is met, not only estimated "
       "(docs/curves.md).");
   CLI::Option* model =
-      length->add_option("MODEL", options->model, "Model JSON, or a CSV point set taken as one Bézier curve")->required();
+      length->add_option("MODEL", options->model, kModelFileHelp)->required();
+  add_units_option(length, options->units);
   options->from_option = length->add_option("--from", options->from, "Measure from parameter T0 (default: the start of the domain)")
                              ->type_name("T0");
   options->to_option =

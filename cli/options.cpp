@@ -12,6 +12,7 @@
 
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "progress.hpp"
 
 namespace casteljau::cli {
@@ -116,6 +117,22 @@ CLI::Option* add_function_flag(CLI::App* command, bool& function) {
   return command->add_flag("--function", function,
                            "The first column is x (strictly increasing) and the parameter: the curve (x, s(x)) over "
                            "[x_0, x_n]");
+}
+
+CLI::Option* add_units_option(CLI::App* command, std::string& units) {
+  return command
+      ->add_option("--units", units,
+                   "The units an SVG drawing is read in: user (its root's user units, the default) or mm "
+                   "(through the root's width, height and viewBox)")
+      ->type_name("user|mm");
+}
+
+Expected<std::vector<Model>> read_model_file(const std::string& path, const std::string& units) {
+  DrawingUnits drawing_units = DrawingUnits::user;
+  if (units == "mm") drawing_units = DrawingUnits::millimetres;
+  else if (!units.empty() && units != "user")
+    return Error{fmt::format("--units: '{}' is not user or mm", units.substr(0, 40)), ErrorKind::invalid_argument};
+  return read_models(path, drawing_units);
 }
 
 Error in_file(const std::string& path, const Error& error) {

@@ -50,6 +50,21 @@ std::string_view trimmed(std::string_view text);
 /// (piecewise_bezier) in 'm.json'": a model as messages name it.
 std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file);
 
+/// --units user|mm: the units a drawing (SVG) is read in: its root's user
+/// units (the default) or millimetres through the root's width, height and
+/// viewBox (io/svg_drawing.hpp).
+CLI::Option* add_units_option(CLI::App* command, std::string& units);
+
+/// The models of a MODEL file (io/model_file.hpp's read_models: model JSON,
+/// CSV point set or SVG drawing) in the --units given ("" is user units):
+/// "--units: 'cm' is not user or mm".
+Expected<std::vector<Model>> read_model_file(const std::string& path, const std::string& units);
+
+/// The help of a MODEL argument that takes any model file.
+inline constexpr const char* kModelFileHelp =
+    "Model JSON, a CSV point set taken as one Bézier curve, or an SVG drawing (one curve per subpath, in the "
+    "root's user units, y down)";
+
 /// "head.csv: <message>": a library error about a file's data, naming the file.
 Error in_file(const std::string& path, const Error& error);
 

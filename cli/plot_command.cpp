@@ -22,6 +22,7 @@ namespace casteljau::cli {
 namespace {
 
 struct PlotCommandOptions {
+  std::string units;
   std::vector<std::string> inputs;
   std::string output;
   std::string construction;
@@ -47,13 +48,21 @@ struct CsvStyle {
 };
 
 /// A file as a plot source: .json is model JSON; .csv a point set, drawn as
-/// `csv` says.
-Expected<render::PlotSource> read_source(const std::string& path, const CsvStyle& csv) {
+/// `csv` says; .svg a drawing, one curve per subpath in `units` (drawn as
+/// read: y down in the file is y up in the figure, so the drawing shows
+/// mirrored, as its coordinates are).
+Expected<render::PlotSource> read_source(const std::string& path, const CsvStyle& csv, const std::string& units) {
   const std::string extension = lowercase_extension(path);
   render::PlotSource source;
   source.name = std::filesystem::path(path).filename().string();
   if (extension == ".json") {
     auto models = read_models_json(path);
+    if (!models) return models.error();
+    source.models = std::move(*models);
+    return source;
+  }
+  if (extension == ".svg") {
+    auto models = read_model_file(path, units);
     if (!models) return models.error();
     source.models = std::move(*models);
     return source;
@@ -72,7 +81,7 @@ Expected<render::PlotSource> read_source(const std::string& path, const CsvStyle
     source.models.push_back(std::move(*curve));
     return source;
   }
-  return Error{fmt::format("cannot plot '{}': unknown input format '{}' (use model JSON .json or a CSV point set .csv)",
+  return Error{fmt::format("cannot plot '{}': unknown input format '{}' (use model JSON .json, a CSV point set .csv or an SVG drawing .svg)",
                            path, extension.empty() ? "no extension" : extension)};
 }
 
@@ -102,7 +111,7 @@ int run_plot(const PlotCommandOptions& options) {
   const CsvStyle csv{options.data_points || options.points_only, options.data_polyline};
   std::vector<render::PlotSource> sources;
   for (const auto& path : options.inputs) {
-    auto source = read_source(path, csv);
+    auto source = read_source(path, csv, options.units);
     if (!source) return fail(source.error());
     sources.push_back(std::move(*source));
   }
@@ -157,8 +166,10 @@ void add_plot_command(CLI::App& app, int& status) {
       "plane): their iso-curves, with --control-polygon their control nets, with --points their control points; "
       "PNG and PDF add a panel with the surfaces tessellated and shaded (Lambert, painter's algorithm).");
   CLI::Option* inputs = plot->add_option("INPUT", options->inputs,
-                                         "Model JSON (.json) or CSV point set (.csv); several are drawn together")
+                                         "Model JSON (.json), CSV point set (.csv) or SVG drawing (.svg); several are "
+                                         "drawn together")
                             ->required();
+  add_units_option(plot, options->units);
   CLI::Option* output =
       plot->add_option("-o,--output", options->output, kFigureOutputHelp)->type_name("FILE")->required();
   plot->add_flag("--control-polygon", options->control_polygon, "Draw each control polygon (dashed gray)");

@@ -25,6 +25,7 @@
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/io/obj.hpp"
 #include "casteljau/io/ply.hpp"

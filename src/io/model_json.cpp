@@ -1,6 +1,6 @@
 // Model JSON, the document (docs/formats.md, "Model JSON"): one model object,
 // or {"models": [...]} for several; the dispatch by a model's type; and the
-// public entry points that read text, files, or either JSON or CSV. The steps
+// public entry points that read JSON text and files. The steps
 // behind them: model_json_syntax.cpp (text -> document), model_json_values.cpp
 // (values -> containers, make()'s errors placed), model_json_curves.cpp and
 // model_json_surfaces.cpp (one reader per type), model_json_write.cpp.
@@ -87,27 +87,6 @@ Expected<std::vector<Model>> read_models_json(const std::filesystem::path& path)
   const auto text = read_text_file(path);
   if (!text) return text.error();
   return parse_models_json(*text, display_name(path));
-}
-
-Expected<std::vector<Model>> read_models(const std::filesystem::path& path) {
-  const auto text = read_text_file(path);
-  if (!text) return text.error();
-  const std::string source = display_name(path);
-  const std::string name = path.string();
-  bool is_json = false;
-  if (io_detail::has_extension(name, ".json")) {
-    is_json = true;
-  } else if (!io_detail::has_extension(name, ".csv")) {
-    const std::string_view content = io_detail::without_byte_order_mark(*text);
-    const auto first = content.find_first_not_of(" \t\r\n");
-    is_json = first != std::string_view::npos && content[first] == '{';
-  }
-  if (is_json) return parse_models_json(*text, source);
-  auto points = parse_points_csv(*text, source);
-  if (!points) return points.error();
-  auto curve = BezierCurve::make(std::move(*points));
-  if (!curve) return with_context(curve.error(), source);
-  return std::vector<Model>{Model{std::move(*curve)}};
 }
 
 }  // namespace casteljau

@@ -13,15 +13,14 @@
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/core/vec.hpp"
-#include "casteljau/io/csv.hpp"
 #include "casteljau/nurbs/conics.hpp"
+#include "svg_scanner.hpp"
 
 namespace casteljau {
 namespace {
 
-/// SVG's white space (SVG 1.1 §8.3.9 wsp: space, tab, LF, CR; SVG 2 adds FF).
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f'; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
+using io_detail::SvgScanner;
+
 bool is_command(char c) {
   switch (c) {
     case 'M': case 'm': case 'Z': case 'z': case 'L': case 'l': case 'H': case 'h': case 'V': case 'v':
@@ -52,89 +51,6 @@ Arguments arguments_of(char command) {
 
 /// "'A' takes rx ry ...": what an error message says a command needed.
 std::string takes(char command) { return fmt::format("'{}' takes {}", command, arguments_of(command).names); }
-
-/// Reads the data left to right; errors name the character they stop at.
-class Scanner {
- public:
-  explicit Scanner(std::string_view data) : data_(data) {}
-
-  bool done() const { return at_ >= data_.size(); }
-  char peek() const { return data_[at_]; }
-  std::size_t position() const { return at_; }
-  void advance() { ++at_; }
-  void skip_spaces() {
-    while (!done() && is_space(peek())) ++at_;
-  }
-  /// comma-wsp? of the grammar: spaces, at most one comma, spaces.
-  void skip_separator() {
-    skip_spaces();
-    if (!done() && peek() == ',') {
-      ++at_;
-      skip_spaces();
-    }
-  }
-  /// True when a number starts here (sign, digit or a point before a digit).
-  bool at_number() const {
-    if (done()) return false;
-    const char c = peek();
-    if (is_digit(c)) return true;
-    const std::size_t next = at_ + 1;
-    if (c == '.') return next < data_.size() && is_digit(data_[next]);
-    if (c == '+' || c == '-') {
-      if (next >= data_.size()) return false;
-      return is_digit(data_[next]) || (data_[next] == '.' && next + 1 < data_.size() && is_digit(data_[next + 1]));
-    }
-    return false;
-  }
-
-  /// number: sign? (digits ('.' digits?)? | '.' digits) exponent?, the
-  /// longest such text (so "1.5.5" is 1.5 then .5, "1-2" is 1 then -2).
-  /// `command` only names what it takes in the message of an error.
-  Expected<double> number(char command) {
-    if (!at_number()) return error(fmt::format("expected a number, {}", takes(command)));
-    const std::size_t first = at_;
-    if (peek() == '+' || peek() == '-') ++at_;
-    while (!done() && is_digit(peek())) ++at_;
-    if (!done() && peek() == '.') {
-      ++at_;
-      while (!done() && is_digit(peek())) ++at_;
-    }
-    if (!done() && (peek() == 'e' || peek() == 'E')) {
-      std::size_t e = at_ + 1;
-      if (e < data_.size() && (data_[e] == '+' || data_[e] == '-')) ++e;
-      if (e < data_.size() && is_digit(data_[e])) {
-        at_ = e;
-        while (!done() && is_digit(peek())) ++at_;
-      }
-    }
-    const std::string_view text = data_.substr(first, at_ - first);
-    auto value = parse_number(text);
-    if (!value) return error_at(first, value.error().message);
-    if (std::abs(*value) > tolerances::kMaxCoordinate)
-      return error_at(first, fmt::format("'{}' is beyond {:g}, the largest coordinate casteljau takes", text,
-                                         tolerances::kMaxCoordinate));
-    return *value;
-  }
-
-  /// flag: '0' or '1', one character, needing no separator after it.
-  Expected<bool> flag(char command) {
-    if (done() || (peek() != '0' && peek() != '1'))
-      return error(fmt::format("expected a flag (0 or 1), {}", takes(command)));
-    return data_[at_++] == '1';
-  }
-
-  Error error(const std::string& what) const { return error_at(at_, what); }
-  Error error_at(std::size_t where, const std::string& what) const {
-    if (where >= data_.size()) return Error{fmt::format("path data, at its end: {}", what), ErrorKind::parse};
-    const unsigned char c = static_cast<unsigned char>(data_[where]);
-    const std::string shown = c >= 0x20 && c < 0x7f ? fmt::format("'{}'", static_cast<char>(c)) : fmt::format("byte 0x{:02x}", c);
-    return Error{fmt::format("path data, character {} ({}): {}", where + 1, shown, what), ErrorKind::parse};
-  }
-
- private:
-  std::string_view data_;
-  std::size_t at_ = 0;
-};
 
 /// The pieces of the subpath being drawn and the state the commands share.
 class Builder {
@@ -281,17 +197,21 @@ Status add_arc(Builder& path, double rx, double ry, double rotation_degrees, boo
 }
 
 /// One segment of `command` (its arguments read from the scanner).
-Status read_segment(Scanner& in, Builder& path, char command) {
+Status read_segment(SvgScanner& in, Builder& path, char command) {
   const Arguments wanted = arguments_of(command);
   std::array<double, 7> value{};
   for (std::size_t i = 0; wanted.kinds[i] != '\0'; ++i) {
     if (i > 0) in.skip_separator();
     if (wanted.kinds[i] == 'f') {
-      auto flag = in.flag(command);
-      if (!flag) return flag.error();
-      value[i] = *flag ? 1.0 : 0.0;
+      // flag: '0' or '1', one character, needing no separator after it.
+      if (in.done() || (in.peek() != '0' && in.peek() != '1'))
+        return in.error(fmt::format("expected a flag (0 or 1), {}", takes(command)));
+      value[i] = in.peek() == '1' ? 1.0 : 0.0;
+      in.advance();
     } else {
-      auto number = in.number(command);
+      // The command's arguments are named only when no number is there.
+      if (!in.at_number()) return in.error(fmt::format("expected a number, {}", takes(command)));
+      auto number = in.number();
       if (!number) return number.error();
       value[i] = *number;
     }
@@ -329,7 +249,7 @@ Status read_segment(Scanner& in, Builder& path, char command) {
 }  // namespace
 
 SvgPathData read_svg_path(std::string_view data) {
-  Scanner in(data);
+  SvgScanner in(data, "path data");
   Builder path;
   SvgPathData result;
   const auto stop = [&](Error error) {

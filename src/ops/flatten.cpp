@@ -14,6 +14,7 @@
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/core/vec.hpp"
 #include "../bezier/de_casteljau.hpp"
+#include "certified_budget.hpp"
 
 #if defined(__AVX__) || defined(__AVX512F__)
 #include <immintrin.h>
@@ -30,6 +31,8 @@
 
 namespace casteljau {
 namespace {
+
+using ops_detail::certified_budget;
 
 // --- search parameters (ratios of the budget, not tolerances) ---------------
 // The search aims a little below the budget so that its prediction usually
@@ -449,26 +452,6 @@ struct CountingSink {
   void add(double, const Vec2&) { ++vertices; }
 };
 
-/// The budget each segment is certified against: tolerance minus the rounding
-/// allowance; an error for a tolerance that is not finite and > 0, or below
-/// what double precision can certify.
-Expected<double> segment_budget(const BezierCurve& curve, Tolerance tolerance) {
-  if (!(std::isfinite(tolerance.distance) && tolerance.distance > 0.0))
-    return Error{"the flattening tolerance must be a finite distance > 0, got " + std::to_string(tolerance.distance)};
-  double weight_ratio = 1.0;
-  if (curve.is_rational()) {
-    const auto [lightest, heaviest] = std::minmax_element(curve.weights().begin(), curve.weights().end());
-    weight_ratio = *heaviest / *lightest;
-  }
-  const double allowance = tolerances::kFlattenRoundingAllowance * scale_of(curve.control_points()) *
-                           std::max(1.0, curve.degree() / 4.0) * weight_ratio;
-  if (tolerance.distance < tolerances::kFlattenSmallestToleranceFactor * allowance)
-    return Error{"the flattening tolerance " + std::to_string(tolerance.distance) +
-                 " is below what double precision can certify for this curve (" +
-                 std::to_string(tolerances::kFlattenSmallestToleranceFactor * allowance) + ")"};
-  return tolerance.distance - allowance;
-}
-
 /// Greedy furthest reach on a plane cubic (the fallback of the fast path):
 /// appends t_1 .. t_m = 1 to `parameters` (t_0 = 0 already there).
 Status greedy_plane_cubic(const PlaneCubic& curve_form, double limit, long max_segments,
@@ -772,14 +755,14 @@ bool is_plane_cubic(const BezierCurve& curve) {
 /// The budget, then the parameters of a plane cubic's flattening (fast path).
 Status plane_cubic_flattening(const BezierCurve& curve, Tolerance tolerance, long max_segments,
                               std::vector<double>& parameters) {
-  auto limit = segment_budget(curve, tolerance);
+  auto limit = certified_budget(curve, tolerance, "flattening");
   if (!limit) return limit.error();
   return plane_cubic_parameters(PlaneCubic(curve.control_points()), *limit, max_segments, parameters);
 }
 
 template <class Sink>
 Status flatten_general_into(const BezierCurve& curve, Tolerance tolerance, long max_segments, Sink& sink) {
-  auto limit = segment_budget(curve, tolerance);
+  auto limit = certified_budget(curve, tolerance, "flattening");
   if (!limit) return limit.error();
   return flatten_general(curve, *limit, max_segments, sink);
 }

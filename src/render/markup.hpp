@@ -1,26 +1,10 @@
 #pragma once
-// Text inside SVG and HTML: one escaping function for both writers.
+// Text inside SVG and HTML: the one escaping function, io's (src/io/markup.hpp).
 
-#include <string>
-#include <string_view>
+#include "../io/markup.hpp"
 
 namespace casteljau::render::detail {
 
-/// `text` with &, <, > and " replaced by entities, safe inside XML/HTML
-/// elements and double-quoted attributes.
-inline std::string xml_escaped(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+using io_detail::xml_escaped;
 
 }  // namespace casteljau::render::detail

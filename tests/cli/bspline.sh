@@ -73,12 +73,16 @@ check "several models" \
   convert "$work/two.json" --to bspline
 
 printf 'keep' > "$work/existing.svg"
-expect_error "--to svg" "--to svg: this format is not supported yet" convert "$work/quad.json" --to svg -o "$work/existing.svg"
+model space.json '{"type": "bezier", "control_points": [[0,0,0],[1,1,1]]}'
+expect_error "--to svg of a 3D curve" "--to svg: the bezier model in '$work/space.json' lives in R^3, SVG drawings are plane" \
+  convert "$work/space.json" --to svg -o "$work/existing.svg"
 [[ "$(cat "$work/existing.svg")" == keep ]] || { echo "FAIL: --to svg touched its output"; failures=$((failures + 1)); }
-for format in dxf iges gcode; do
+for format in dxf iges step; do
   expect_error "--to $format" "--to $format: this format is not supported yet" convert "$work/quad.json" --to "$format" -o "$work/x.$format"
   [[ ! -e "$work/x.$format" ]] || { echo "FAIL: --to $format wrote a file"; failures=$((failures + 1)); }
 done
+expect_error "--to gcode" "--to gcode: not a conversion of curves; casteljau gcode writes it" \
+  convert "$work/quad.json" --to gcode -o "$work/x.gcode"
 expect_error "--to unknown" "--to 'nurbs': unknown format" convert "$work/quad.json" --to nurbs
 expect_error "--to missing" "--to" convert "$work/quad.json"
 model gap.json '{"type": "piecewise_bezier", "pieces": [[[0,0],[1,1]], [[2,2],[3,3]]]}'

@@ -12,6 +12,7 @@
 
 #include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/io/csv.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/surfaces/revolution.hpp"
 

@@ -11,6 +11,7 @@
 
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/io/model.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "io_test_support.hpp"
 

@@ -1,6 +1,7 @@
 // Model JSON version 1 (docs/formats.md, "Model JSON"): every accepted form,
 // every refused one with its exact message (line and column for syntax,
 // field path for content), and the round trip to_json -> parse, bit for bit.
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 
 #include <gtest/gtest.h>

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "support/generators.hpp"
 

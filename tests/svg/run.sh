@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
-# run.sh CHECKER: Chromium reads the corpus (chromium_paths.mjs), then the
-# checker compares its reading with casteljau's. Needs Debian's chromium and
-# npm's playwright-core in tests/svg/node_modules (make deps installs both);
-# without them the test is skipped (exit 77), except in CI, where it fails.
+# run.sh CHECKER CASTELJAU EXAMPLES: Chromium reads SVG (chromium_paths.mjs,
+# chromium_drawings.mjs), then the checker compares its reading with
+# casteljau's: the path data corpus; the drawings of drawings/ and the SVG
+# files of examples/; and what `casteljau convert --to svg` writes of those
+# drawings and of the plane curve models of examples/. Needs Debian's
+# chromium and npm's playwright-core in tests/svg/node_modules (make deps
+# installs both); without them the test is skipped (exit 77), except in CI,
+# where it fails.
 set -euo pipefail
-checker=$1
+checker=$1 casteljau=$2 examples=$3
 here=$(cd "$(dirname "$0")" && pwd)
 if [ ! -x /usr/bin/chromium ] || [ ! -d "$here/node_modules/playwright-core" ]; then
   echo "svg: Debian's chromium or npm's playwright-core is missing (make deps installs them)"
@@ -13,5 +17,26 @@ if [ ! -x /usr/bin/chromium ] || [ ! -d "$here/node_modules/playwright-core" ]; 
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-node "$here/chromium_paths.mjs" "$here/path_corpus.txt" "$work/chromium.json"
-"$checker" "$here/path_corpus.txt" "$work/chromium.json"
+
+echo "== path data =="
+node "$here/chromium_paths.mjs" "$here/path_corpus.txt" "$work/paths.json"
+"$checker" paths "$here/path_corpus.txt" "$work/paths.json"
+
+echo "== drawings read =="
+mkdir "$work/drawings" "$work/written"
+cp "$here"/drawings/*.svg "$examples"/*.svg "$work/drawings/"
+node "$here/chromium_drawings.mjs" "$work/drawings" "$work/drawings.json"
+"$checker" drawings "$work/drawings" "$work/drawings.json"
+
+echo "== drawings written =="
+# The drawings, and the plane curves of examples/ (exact cubics, NURBS
+# circles and arcs, higher degrees), written at the default tolerance.
+# notebook_curve: degree 4; semicircle: rational; quad, spline: exact.
+cp "$examples"/notebook_curve.json "$examples"/semicircle.json "$examples"/quad.json "$examples"/spline.json \
+   "$work/drawings/"
+for original in "$work"/drawings/*; do
+  name=$(basename "$original")
+  "$casteljau" convert "$original" --to svg -o "$work/written/$name.svg" >/dev/null
+done
+node "$here/chromium_drawings.mjs" "$work/written" "$work/written.json"
+"$checker" written "$work/drawings" "$work/written.json"

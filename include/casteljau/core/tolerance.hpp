@@ -334,6 +334,19 @@ inline constexpr int kMaxBSplineDegree = kMaxBezierDegree;
 /// memory.
 inline constexpr std::size_t kMaxControlPoints = 10'000'000;
 
+/// Deepest nesting of elements in an SVG drawing, <use> references counted
+/// as a level each (the reader walks the tree recursively). Hand-made and
+/// exported drawings nest a few tens of groups; 256 keeps the walk's stack
+/// small on every thread and still reads any drawing a person made.
+inline constexpr int kMaxSvgDepth = 256;
+
+/// Most elements one SVG drawing may draw, each instance of a <use> counted
+/// (a chain of <use> that doubles at each level would otherwise expand to
+/// 2^40 elements from a file of a few kilobytes). A 10 MB drawing holds at
+/// most a few hundred thousand elements; the walk visits 10^6 in well under
+/// a second.
+inline constexpr std::size_t kMaxSvgElements = 1'000'000;
+
 /// Most values in one input file: JSON values (numbers, arrays, objects,
 /// strings...) of a model JSON text, numbers of a CSV file. Exactly what
 /// kMaxControlPoints points in 3D with weights need in JSON (10^7 point

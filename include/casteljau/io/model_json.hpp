@@ -48,12 +48,6 @@ Expected<std::vector<Model>> parse_models_json(std::string_view text, const std:
 /// Reads and parses a model JSON file (errors name the file as given).
 Expected<std::vector<Model>> read_models_json(const std::filesystem::path& path);
 
-/// Reads the models of a file that is either model JSON or a CSV point set;
-/// a point set is the control polygon of one polynomial Bézier curve. The
-/// format is chosen by the extension (".json" JSON, ".csv" CSV, any case),
-/// otherwise by content: JSON when the first character that is not blank
-/// (after an optional byte order mark) is '{', else CSV.
-Expected<std::vector<Model>> read_models(const std::filesystem::path& path);
 
 /// The model as model JSON (one object, one line), numbers in shortest
 /// round-trip form, so parse_models_json(to_json(m)) gives m back exactly.
