@@ -426,6 +426,7 @@ std::span<const GallerySection> gallery_sections() {
       {35, 38,
        "questions asked of a curve: equal-parameter against equal-arc-length samples on the head, curvature combs "
        "of the car's C¹ and C² interpolants, the head's closest-point field, intersections with their kinds"},
+      {39, 39, "drawings read: an SVG drawing with the control polygons of its Bézier pieces"},
   };
   return kSections;
 }
@@ -491,6 +492,9 @@ Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path
   auto queries = detail::query_gallery_figures(examples_dir);
   if (!queries) return queries.error();
   for (auto& f : *queries) figures.push_back(std::move(f));
+  auto drawings = detail::drawing_gallery_figures(examples_dir);
+  if (!drawings) return drawings.error();
+  for (auto& f : *drawings) figures.push_back(std::move(f));
   return figures;
 }
 

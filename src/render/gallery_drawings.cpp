@@ -1,0 +1,72 @@
+// The gallery's figures of drawings casteljau reads (issue 17): an SVG
+// drawing of examples/ read into curves, drawn with the control polygon and
+// control points of every Bézier piece over it (figure_list.hpp).
+#include <fmt/format.h>
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "casteljau/io/svg_drawing.hpp"
+#include "figure_list.hpp"
+
+namespace casteljau::render::detail {
+namespace {
+
+/// The piece with y negated: SVG's y points down, a figure's up.
+BezierCurve upright(const BezierCurve& piece) {
+  const PointArray& p = piece.control_points();
+  std::vector<double> flipped(p.coordinates().begin(), p.coordinates().end());
+  for (std::size_t i = 1; i < flipped.size(); i += 2) flipped[i] = -flipped[i];
+  return BezierCurve::make(PointArray::from_trusted(2, std::move(flipped)),
+                           std::vector<double>(piece.weights().begin(), piece.weights().end()))
+      .value();
+}
+
+Expected<GalleryFigure> svg_drawing_figure(const std::filesystem::path& examples_dir) {
+  const auto drawing = read_svg_drawing(examples_dir / "sailboat.svg");
+  if (!drawing) return drawing.error();
+  if (!drawing->problems.empty()) return drawing->problems.front();
+  Panel panel;
+  panel.equal_aspect = true;
+  panel.legend = LegendPlace::none;
+  std::size_t pieces = 0, rational = 0;
+  std::vector<Vec2> points;
+  for (const SvgCurve& curve : drawing->curves) {
+    CurveItem item{{}, solid(colors::black, 1.6), "", curve.element + (curve.id.empty() ? "" : "#" + curve.id)};
+    for (const BezierCurve& piece : curve.curve.pieces()) {
+      const BezierCurve shown = upright(piece);
+      ++pieces;
+      rational += piece.is_rational() ? 1 : 0;
+      if (shown.degree() > 1) {
+        const auto polygon = plane_points(shown.control_points());
+        panel.polylines.push_back({polygon, dashed(piece.is_rational() ? cycle_color(3) : cycle_color(0), 0.9), ""});
+        points.insert(points.end(), polygon.begin(), polygon.end());
+      }
+      item.pieces.push_back(shown);
+    }
+    panel.curves.push_back(std::move(item));
+  }
+  panel.markers.push_back({points, colors::red, 3.0 * kPixelsPerPoint, ""});
+  Figure figure = figure_of("An SVG drawing read by casteljau (examples/sailboat.svg)", 1000, 720, 1);
+  figure.panels.push_back(std::move(panel));
+  return GalleryFigure{
+      "39_svg_drawing",
+      fmt::format("examples/sailboat.svg read by read_svg_drawing: {} curves (one per subpath of each path and shape, "
+                  "group transforms applied), {} Bézier pieces, {} of them exact rational quadratics (the arcs, "
+                  "circles, ellipses and rounded corners, polygons in red dashes; blue dashes for the others). Drawn "
+                  "with y up, where the file's points down.",
+                  drawing->curves.size(), pieces, rational),
+      std::move(figure)};
+}
+
+}  // namespace
+
+Expected<std::vector<GalleryFigure>> drawing_gallery_figures(const std::filesystem::path& examples_dir) {
+  std::vector<GalleryFigure> figures;
+  if (auto ok = append_figure(figures, svg_drawing_figure(examples_dir)); !ok) return ok.error();
+  return figures;
+}
+
+}  // namespace casteljau::render::detail
