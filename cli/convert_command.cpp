@@ -84,10 +84,9 @@ int convert_to_svg(const ConvertOptions& options) {
   }
   std::vector<SvgCurve> curves;
   if (lowercase_extension(options.model) == ".svg") {
-    const DrawingUnits units = options.units == "mm" ? DrawingUnits::millimetres : DrawingUnits::user;
-    if (!options.units.empty() && options.units != "mm" && options.units != "user")
-      return fail(fmt::format("--units: '{}' is not user or mm", options.units.substr(0, 40)));
-    auto drawing = read_svg_drawing(options.model, units);
+    const auto units = drawing_units_option(options.units);
+    if (!units) return fail(units.error());
+    auto drawing = read_svg_drawing(options.model, *units);
     if (!drawing) return fail(drawing.error());
     if (!drawing->problems.empty()) return fail(drawing->problems.front());
     curves = std::move(drawing->curves);

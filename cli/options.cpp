@@ -127,12 +127,16 @@ CLI::Option* add_units_option(CLI::App* command, std::string& units) {
       ->type_name("user|mm");
 }
 
+Expected<DrawingUnits> drawing_units_option(const std::string& units) {
+  if (units == "mm") return DrawingUnits::millimetres;
+  if (units.empty() || units == "user") return DrawingUnits::user;
+  return Error{fmt::format("--units: '{}' is not user or mm", units.substr(0, 40)), ErrorKind::invalid_argument};
+}
+
 Expected<std::vector<Model>> read_model_file(const std::string& path, const std::string& units) {
-  DrawingUnits drawing_units = DrawingUnits::user;
-  if (units == "mm") drawing_units = DrawingUnits::millimetres;
-  else if (!units.empty() && units != "user")
-    return Error{fmt::format("--units: '{}' is not user or mm", units.substr(0, 40)), ErrorKind::invalid_argument};
-  return read_models(path, drawing_units);
+  auto drawing_units = drawing_units_option(units);
+  if (!drawing_units) return drawing_units.error();
+  return read_models(path, *drawing_units);
 }
 
 Error in_file(const std::string& path, const Error& error) {

@@ -15,6 +15,7 @@
 
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/point_array.hpp"
+#include "casteljau/io/drawing_units.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/render/write.hpp"
 
@@ -54,6 +55,9 @@ std::string model_name(const std::vector<Model>& models, std::size_t index, cons
 /// units (the default) or millimetres through the root's width, height and
 /// viewBox (io/svg_drawing.hpp).
 CLI::Option* add_units_option(CLI::App* command, std::string& units);
+
+/// The value of --units ("" is user units): "--units: 'cm' is not user or mm".
+Expected<DrawingUnits> drawing_units_option(const std::string& units);
 
 /// The models of a MODEL file (io/model_file.hpp's read_models: model JSON,
 /// CSV point set or SVG drawing) in the --units given ("" is user units):

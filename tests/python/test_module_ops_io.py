@@ -277,6 +277,22 @@ def test_model_json_round_trip_through_a_string_and_a_file(tmp_path):
     assert c.read_models(csv) == [c.BezierCurve(SEED_POINTS)]
 
 
+def test_read_models_reads_svg_drawings(tmp_path):
+    # One piecewise curve per subpath, the group's transform applied, y down:
+    # the square's corners worked by hand.
+    drawing = tmp_path / "d.svg"
+    drawing.write_text('<svg xmlns="http://www.w3.org/2000/svg"><g transform="translate(1 2)">'
+                       '<path d="M0 0 h4 v4 h-4 z M10 10 L11 11"/></g><circle r="1"/></svg>')
+    models = c.read_models(drawing)
+    assert len(models) == 3 and all(type(m) is c.PiecewiseBezierCurve for m in models)
+    np.testing.assert_array_equal(c.points_at(models[0], np.array([0.0, 1.0, 2.0, 3.0, 4.0])),
+                                  [[1, 2], [5, 2], [5, 6], [1, 6], [1, 2]])
+    broken = tmp_path / "broken.svg"
+    broken.write_text('<svg>\n<path id="p" d="M0 0 L1 x"/></svg>')
+    with pytest.raises(ValueError, match=r"broken.svg, line 2, <path id='p'>: path data, character 9 \('x'\)"):
+        c.read_models(broken)
+
+
 def test_model_helpers():
     bezier, _, piecewise, bspline, _, surface, sphere, patch, coons = every_model_kind()
     assert [c.is_surface(m) for m in (bezier, piecewise, surface, coons)] == [False, False, True, True]
