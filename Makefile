@@ -13,9 +13,10 @@ PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark
   librapidcheck-dev libgmp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev libpugixml-dev \
   libcairo2-dev poppler-utils emscripten python3-dev python3-numpy python3-scipy \
   python3-matplotlib python3-pytest python3-hypothesis python3-meshio \
-  pybind11-dev python3-pybind11 chromium
-# chromium is a checker we did not write: tests/svg/ has it read SVG path data
-# (driven by npm's playwright-core, installed into tests/svg/node_modules by deps).
+  pybind11-dev python3-pybind11 chromium python3-ezdxf
+# Checkers we did not write: chromium reads SVG in tests/svg/ (driven by npm's
+# playwright-core, installed into tests/svg/node_modules by deps); python3-ezdxf
+# reads and writes DXF in tests/python/test_dxf_ezdxf.py.
 # Peers measured beside casteljau by `make bench`.
 BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
   libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev \
@@ -27,8 +28,11 @@ CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON)
 # (-Wmaybe-uninitialized, -Wstringop-overflow: flow-analysis false positives the
 # -O2 builds of `make test` do not meet), and benchmarks are not what CI gates.
 BENCH_CMAKE_FLAGS := $(CMAKE_FLAGS)
+# CI also keeps only line tables in the -O2 build (-g1: backtraces still name
+# file and line): full debug info is a third of its compile time, and CI
+# has 2 cores and a time budget.
 ifeq ($(CI),true)
-  CMAKE_FLAGS += -DCASTELJAU_WERROR=ON
+  CMAKE_FLAGS += -DCASTELJAU_WERROR=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
 endif
 
 .PHONY: all deps bench-deps build python asan wasm test demo bench bench-publish clean

@@ -1,6 +1,7 @@
 // casteljau convert: a model file rewritten in another representation
 // (docs/cli.md, "convert"): the curve kinds of model JSON, and SVG drawings
-// (io/svg_writer.hpp). dxf, iges and step are refused as not supported yet;
+// (io/svg_writer.hpp), DXF drawings (io/dxf.hpp). iges and step are refused
+// as not supported yet;
 // meshes are tessellate's, G-code gcode's. The output is built in memory and
 // written atomically: on bad input nothing is written.
 #include <fmt/format.h>
@@ -18,6 +19,7 @@
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_file.hpp"
+#include "casteljau/io/dxf.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/io/svg_drawing.hpp"
 #include "casteljau/io/svg_writer.hpp"
@@ -128,16 +130,36 @@ int convert_to_svg(const ConvertOptions& options) {
   return write_summary(options.output, summary);
 }
 
+/// --to dxf: each curve an exact SPLINE entity of an R2000 drawing.
+int convert_to_dxf(const ConvertOptions& options) {
+  if (given(options.tolerance_option)) return fail("--tolerance applies to --to svg (the cubics' distance)");
+  const auto models = read_model_file(options.model, options.units);
+  if (!models) return fail(models.error());
+  for (std::size_t m = 0; m < models->size(); ++m) {
+    const Model& model = (*models)[m];
+    const std::string name = model_name(*models, m, options.model);
+    if (is_surface(model)) return fail(fmt::format("--to dxf: {} is a surface; surfaces go to iges and step", name));
+    if (dimension_of(model) != 2 && dimension_of(model) != 3)
+      return fail(fmt::format("--to dxf: {} lives in R^{}, DXF holds plane and space curves", name,
+                              dimension_of(model)));
+  }
+  // $INSUNITS: millimetres when the drawing was read in mm, else unitless.
+  auto written = write_dxf_drawing(*models, options.units == "mm" ? 4 : 0);
+  if (!written) return fail(with_context(written.error(), "--to dxf"));
+  return write_output(options.output, *written);
+}
+
 int run_convert(const ConvertOptions& options) {
   // --- the target format first: a typo should not wait for a large file ---
   const std::string& format = options.format;
   const bool to_pieces = format == "bezier-pieces", to_spline = format == "bspline", as_json = format == "json";
   if (format == "svg") return convert_to_svg(options);
+  if (format == "dxf") return convert_to_dxf(options);
   if (!to_pieces && !to_spline && !as_json) {
-    for (const char* later : {"dxf", "iges", "step"}) {
+    for (const char* later : {"iges", "step"}) {
       if (format == later) {
         return fail(fmt::format("--to {}: this format is not supported yet by this version of casteljau "
-                                "(supported: bezier-pieces, bspline, json, svg)",
+                                "(supported: bezier-pieces, bspline, json, svg, dxf)",
                                 format));
       }
     }
@@ -146,7 +168,7 @@ int run_convert(const ConvertOptions& options) {
       if (format == other)
         return fail(fmt::format("--to {}: not a conversion of curves; {} writes it", format, command));
     }
-    return fail(fmt::format("--to '{}': unknown format (supported: bezier-pieces, bspline, json, svg)",
+    return fail(fmt::format("--to '{}': unknown format (supported: bezier-pieces, bspline, json, svg, dxf)",
                             format.substr(0, 60)));
   }
   if (given(options.tolerance_option)) return fail("--tolerance applies to --to svg (the cubics' distance)");
@@ -187,9 +209,10 @@ void add_convert_command(CLI::App& app, int& status) {
       "clamped knots, a piecewise curve with its joints as knots of multiplicity p), json (the models as read); or "
       "svg, an SVG drawing of plane curves: lines, quadratics and cubics exactly, other pieces (rational, degree > "
       "3) as cubics within --tolerance, which the summary line and the file state; an SVG input keeps its ids, "
-      "fill rules and stroke widths. dxf, iges and step are not supported yet.");
+      "fill rules and stroke widths; or dxf, a DXF R2000 drawing with each curve an exact SPLINE entity. iges and "
+      "step are not supported yet.");
   CLI::Option* model = convert->add_option("MODEL", options->model, kModelFileHelp)->required();
-  convert->add_option("--to", options->format, "The target: bezier-pieces, bspline, json or svg")
+  convert->add_option("--to", options->format, "The target: bezier-pieces, bspline, json, svg or dxf")
       ->type_name("FORMAT")
       ->required();
   options->tolerance_option =

@@ -122,8 +122,8 @@ CLI::Option* add_function_flag(CLI::App* command, bool& function) {
 CLI::Option* add_units_option(CLI::App* command, std::string& units) {
   return command
       ->add_option("--units", units,
-                   "The units an SVG drawing is read in: user (its root's user units, the default) or mm "
-                   "(through the root's width, height and viewBox)")
+                   "The units a drawing is read in: user (an SVG's root user units, a DXF's drawing units; the "
+                   "default) or mm (through an SVG root's width, height and viewBox, a DXF's $INSUNITS)")
       ->type_name("user|mm");
 }
 

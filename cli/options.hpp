@@ -51,9 +51,9 @@ std::string_view trimmed(std::string_view text);
 /// (piecewise_bezier) in 'm.json'": a model as messages name it.
 std::string model_name(const std::vector<Model>& models, std::size_t index, const std::string& file);
 
-/// --units user|mm: the units a drawing (SVG) is read in: its root's user
-/// units (the default) or millimetres through the root's width, height and
-/// viewBox (io/svg_drawing.hpp).
+/// --units user|mm: the units a drawing is read in: its own (an SVG's root
+/// user units, a DXF's drawing units; the default) or millimetres (through an
+/// SVG root's width, height and viewBox, a DXF's $INSUNITS).
 CLI::Option* add_units_option(CLI::App* command, std::string& units);
 
 /// The value of --units ("" is user units): "--units: 'cm' is not user or mm".
@@ -66,8 +66,8 @@ Expected<std::vector<Model>> read_model_file(const std::string& path, const std:
 
 /// The help of a MODEL argument that takes any model file.
 inline constexpr const char* kModelFileHelp =
-    "Model JSON, a CSV point set taken as one Bézier curve, or an SVG drawing (one curve per subpath, in the "
-    "root's user units, y down)";
+    "Model JSON, a CSV point set taken as one Bézier curve, an SVG drawing (one curve per subpath, in the "
+    "root's user units, y down) or a DXF drawing (one curve per curve entity, in its units)";
 
 /// "head.csv: <message>": a library error about a file's data, naming the file.
 Error in_file(const std::string& path, const Error& error);

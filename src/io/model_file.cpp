@@ -5,9 +5,14 @@
 #include <fmt/format.h>
 
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <utility>
 
+#include "casteljau/bezier/affine.hpp"
+#include "casteljau/bspline/transform.hpp"
 #include "casteljau/io/csv.hpp"
+#include "casteljau/io/dxf.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/io/svg_drawing.hpp"
@@ -16,17 +21,19 @@
 namespace casteljau {
 namespace {
 
+/// A drawing's first problem as the error, saying how many more there are.
+Error first_problem(const std::vector<Error>& problems) {
+  Error first = problems.front();
+  if (problems.size() > 1)
+    first.message += fmt::format(" (and {} more problem{})", problems.size() - 1, problems.size() > 2 ? "s" : "");
+  return first;
+}
+
 /// One piecewise_bezier model per subpath of the drawing; its problems are errors.
 Expected<std::vector<Model>> models_of_drawing(std::string_view text, const std::string& source, DrawingUnits units) {
   auto drawing = parse_svg_drawing(text, source, units);
   if (!drawing) return drawing.error();
-  if (!drawing->problems.empty()) {
-    Error first = drawing->problems.front();
-    if (drawing->problems.size() > 1)
-      first.message += fmt::format(" (and {} more problem{})", drawing->problems.size() - 1,
-                                   drawing->problems.size() > 2 ? "s" : "");
-    return first;
-  }
+  if (!drawing->problems.empty()) return first_problem(drawing->problems);
   if (drawing->curves.empty())
     return Error{fmt::format("{}: the drawing has no path or shape to read{}", source,
                              drawing->skipped.empty() ? "" : fmt::format(" ({})", drawing->skipped.front())),
@@ -37,6 +44,70 @@ Expected<std::vector<Model>> models_of_drawing(std::string_view text, const std:
   return models;
 }
 
+/// Millimetres per drawing unit of DXF's $INSUNITS (0: unitless).
+double dxf_millimetres(int insunits) {
+  switch (insunits) {
+    case 1: return 25.4;        // inches
+    case 2: return 304.8;       // feet
+    case 3: return 1609344.0;   // miles
+    case 4: return 1.0;         // millimetres
+    case 5: return 10.0;        // centimetres
+    case 6: return 1000.0;      // metres
+    case 7: return 1e6;         // kilometres
+    case 8: return 25.4e-6;     // microinches
+    case 9: return 0.0254;      // mils
+    case 10: return 914.4;      // yards
+    case 13: return 1e-3;       // microns
+    case 14: return 100.0;      // decimetres
+    default: return 0.0;        // unitless, or a unit this reader does not convert
+  }
+}
+
+/// One curve model per curve entity; problems are errors; millimetres
+/// through $INSUNITS.
+Expected<std::vector<Model>> models_of_dxf(std::string_view text, const std::string& source, DrawingUnits units) {
+  auto drawing = parse_dxf_drawing(text, source);
+  if (!drawing) return drawing.error();
+  if (!drawing->problems.empty()) return first_problem(drawing->problems);
+  if (drawing->curves.empty())
+    return Error{fmt::format("{}: the drawing has no curve entity to read{}", source,
+                             drawing->skipped.empty() ? "" : fmt::format(" ({})", drawing->skipped.front())),
+                 ErrorKind::invalid_argument};
+  double scale = 1.0;
+  if (units == DrawingUnits::millimetres) {
+    scale = dxf_millimetres(drawing->insunits);
+    if (scale == 0.0)
+      return Error{fmt::format("{}: millimetres need the drawing's units, and its $INSUNITS is {} ({})", source,
+                               drawing->insunits, drawing->insunits == 0 ? "unitless" : "not a length unit"),
+                   ErrorKind::invalid_argument};
+  }
+  std::vector<Model> models;
+  models.reserve(drawing->curves.size());
+  for (DxfCurve& curve : drawing->curves) {
+    if (scale == 1.0) {
+      models.push_back(std::move(curve.curve));
+      continue;
+    }
+    const AffineMap map = AffineMap::scale(dimension_of(curve.curve), scale);
+    auto scaled = std::visit(
+        [&](const auto& c) -> Expected<Model> {
+          using T = std::decay_t<decltype(c)>;
+          if constexpr (std::is_same_v<T, BezierCurve> || std::is_same_v<T, PiecewiseBezierCurve> ||
+                        std::is_same_v<T, BSplineCurve>) {
+            auto t = transformed(c, map);
+            if (!t) return t.error();
+            return Model{std::move(*t)};
+          } else {
+            return Model{c};
+          }
+        },
+        curve.curve);
+    if (!scaled) return with_context(scaled.error(), source);
+    models.push_back(std::move(*scaled));
+  }
+  return models;
+}
+
 }  // namespace
 
 Expected<std::vector<Model>> read_models(const std::filesystem::path& path, DrawingUnits units) {
@@ -44,21 +115,29 @@ Expected<std::vector<Model>> read_models(const std::filesystem::path& path, Draw
   if (!text) return text.error();
   const std::string source = display_name(path);
   const std::string name = path.string();
-  enum class Format { json, csv, svg } format = Format::csv;
+  enum class Format { json, csv, svg, dxf } format = Format::csv;
   if (io_detail::has_extension(name, ".json")) {
     format = Format::json;
   } else if (io_detail::has_extension(name, ".svg")) {
     format = Format::svg;
+  } else if (io_detail::has_extension(name, ".dxf")) {
+    format = Format::dxf;
   } else if (!io_detail::has_extension(name, ".csv")) {
     const std::string_view content = io_detail::without_byte_order_mark(*text);
     const auto first = content.find_first_not_of(" \t\r\n");
     if (first != std::string_view::npos && content[first] == '{') format = Format::json;
     if (first != std::string_view::npos && content[first] == '<') format = Format::svg;
+    // DXF: a group code 0 (or a 999 comment) on the first line, then SECTION.
+    if (first != std::string_view::npos && (content.substr(first, 4) == "999\n" || content.substr(first, 5) == "999\r\n" ||
+                                            ((content.substr(first, 2) == "0\n" || content.substr(first, 3) == "0\r\n") &&
+                                             content.find("SECTION") < first + 16)))
+      format = Format::dxf;
   }
   if (format == Format::svg) return models_of_drawing(*text, source, units);
+  if (format == Format::dxf) return models_of_dxf(*text, source, units);
   if (units != DrawingUnits::user)
     return Error{fmt::format("{}: millimetres are asked of {}, whose numbers have no unit (--units applies to "
-                             "drawings: SVG)",
+                             "drawings: SVG, DXF)",
                              source, format == Format::json ? "model JSON" : "a CSV point set"),
                  ErrorKind::invalid_argument};
   if (format == Format::json) return parse_models_json(*text, source);

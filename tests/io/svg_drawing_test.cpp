@@ -354,7 +354,7 @@ TEST(SvgDrawing, ReadModelsTakesDrawings) {
   auto unitless = read_models(write("p.csv", "0,0\n1,1\n"), DrawingUnits::millimetres);
   ASSERT_FALSE(unitless);
   EXPECT_EQ(unitless.error().message, fmt::format("{}: millimetres are asked of a CSV point set, whose numbers have "
-                                                  "no unit (--units applies to drawings: SVG)",
+                                                  "no unit (--units applies to drawings: SVG, DXF)",
                                                   (folder / "p.csv").string()));
   std::filesystem::remove_all(folder);
 }

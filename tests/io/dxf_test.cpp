@@ -1,0 +1,225 @@
+// DXF drawings (io/dxf.hpp): each curve entity read exactly (values worked by
+// hand from the DXF reference: ARC angles counter-clockwise in degrees, bulge
+// = tan(θ/4), the arbitrary axis algorithm for extrusion (0, 0, -1)), the
+// plane/space choice, $INSUNITS, the file's errors with their line and the
+// entity problems, and the writer's round trip (the same doubles back).
+// ezdxf's own reading and writing are compared in tests/python/test_dxf_ezdxf.py.
+#include "casteljau/io/dxf.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/curves/curve_view.hpp"
+#include "casteljau/io/model_json.hpp"
+#include "casteljau/nurbs/conics.hpp"
+
+namespace casteljau {
+namespace {
+
+/// A DXF file of the entities' group lines ("0\nLINE\n10\n1\n..."), in ENTITIES.
+std::string dxf(const std::string& entities, const std::string& header = "") {
+  return "0\nSECTION\n2\nHEADER\n" + header + "0\nENDSEC\n0\nSECTION\n2\nENTITIES\n" + entities +
+         "0\nENDSEC\n0\nEOF\n";
+}
+
+DxfDrawing read_valid(const std::string& text) {
+  auto drawing = parse_dxf_drawing(text, "t.dxf");
+  EXPECT_TRUE(drawing.has_value()) << drawing.error().message;
+  if (!drawing) return {};
+  for (const Error& problem : drawing->problems) ADD_FAILURE() << problem.message;
+  return std::move(*drawing);
+}
+
+void expect_point(const Point& p, std::vector<double> expected, double tolerance = 1e-14) {
+  ASSERT_EQ(p.size(), expected.size());
+  for (std::size_t k = 0; k < p.size(); ++k) EXPECT_NEAR(p[k], expected[k], tolerance) << "coordinate " << k;
+}
+
+TEST(DxfRead, LinesInThePlaneAndInSpace) {
+  const auto plane = read_valid(dxf("0\nLINE\n5\n1F\n8\nparts\n10\n1\n20\n2\n11\n4\n21\n6\n"));
+  ASSERT_EQ(plane.curves.size(), 1u);
+  EXPECT_EQ(plane.curves[0].entity, "LINE");
+  EXPECT_EQ(plane.curves[0].handle, "1F");
+  EXPECT_EQ(plane.curves[0].layer, "parts");
+  EXPECT_EQ(dimension_of(plane.curves[0].curve), 2);  // every z is 0
+  expect_point(point_at(curve_view(plane.curves[0].curve), 0.5), {2.5, 4});
+  const auto space = read_valid(dxf("0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n0\nLINE\n10\n0\n20\n0\n30\n1\n11\n1\n21\n0\n"));
+  ASSERT_EQ(space.curves.size(), 2u);
+  EXPECT_EQ(dimension_of(space.curves[0].curve), 3);  // one z is not 0: all in R^3
+}
+
+TEST(DxfRead, ArcsRunCounterClockwiseFromStartToEndAngle) {
+  // Centre (1, 2), radius 2, from 90 to 180 degrees: (1, 4) to (-1, 2).
+  const auto drawing = read_valid(dxf("0\nARC\n10\n1\n20\n2\n40\n2\n50\n90\n51\n180\n"
+                                      "0\nARC\n10\n0\n20\n0\n40\n1\n50\n270\n51\n45\n"));
+  ASSERT_EQ(drawing.curves.size(), 2u);
+  const CurveView quarter = curve_view(drawing.curves[0].curve);
+  expect_point(point_at(quarter, 0.0), {1, 4});
+  expect_point(point_at(quarter, 1.0), {-1, 2});
+  const Point middle = point_at(quarter, 0.5);
+  EXPECT_NEAR(std::hypot(middle[0] - 1, middle[1] - 2), 2.0, 1e-15);
+  // 270 to 45 crosses 0: a sweep of 135 degrees, ending at (√½, √½).
+  const CurveView crossing = curve_view(drawing.curves[1].curve);
+  expect_point(point_at(crossing, 0.0), {0, -1});
+  expect_point(point_at(crossing, 1.0), {std::sqrt(0.5), std::sqrt(0.5)});
+}
+
+TEST(DxfRead, ExtrusionDownwardsMirrorsX) {
+  // Arbitrary axis algorithm for N = (0, 0, -1): Ax = (-1, 0, 0), Ay = (0, 1, 0).
+  const auto drawing = read_valid(dxf("0\nCIRCLE\n10\n3\n20\n0\n40\n1\n210\n0\n220\n0\n230\n-1\n"));
+  const CurveView circle = curve_view(drawing.curves.at(0).curve);
+  expect_point(point_at(circle, 0.0), {-4, 0});  // OCS (3 + 1, 0) is WCS (-4, 0)
+  const Point quarter = point_at(circle, 0.25);
+  expect_point(quarter, {-3, 1});
+}
+
+TEST(DxfRead, EllipsesAndTheirArcs) {
+  // Centre (0, 0), major axis (4, 0), ratio 0.5: minor axis (0, 2); from 0 to π/2.
+  const auto drawing = read_valid(dxf(fmt::format("0\nELLIPSE\n10\n0\n20\n0\n11\n4\n21\n0\n40\n0.5\n41\n0\n42\n{}\n",
+                                                  std::numbers::pi / 2)));
+  const CurveView arc = curve_view(drawing.curves.at(0).curve);
+  expect_point(point_at(arc, 0.0), {4, 0});
+  expect_point(point_at(arc, 1.0), {0, 2}, 1e-14);
+  for (int k = 0; k <= 16; ++k) {
+    const Point p = point_at(arc, k / 16.0);
+    EXPECT_NEAR(std::hypot(p[0] / 4, p[1] / 2), 1.0, 1e-15);
+  }
+}
+
+TEST(DxfRead, PolylineBulgesAreExactArcs) {
+  // Bulge 1 from (0, 0) to (2, 0): a half circle of radius 1 about (1, 0),
+  // counter-clockwise, so through (1, -1); then a line back, closed.
+  const auto drawing =
+      read_valid(dxf("0\nLWPOLYLINE\n90\n2\n70\n1\n10\n0\n20\n0\n42\n1\n10\n2\n20\n0\n"));
+  const auto& curve = std::get<PiecewiseBezierCurve>(drawing.curves.at(0).curve);
+  const CurveView view(curve);
+  expect_point(point_at(view, 0.0), {0, 0});
+  const Interval domain = view.domain();
+  double lowest = 0.0;
+  for (int k = 0; k <= 200; ++k) {
+    const double u = domain.lower + (domain.upper - domain.lower) * k / 200;
+    const Point p = point_at(view, u);
+    if (p[1] < 0) {
+      EXPECT_NEAR(std::hypot(p[0] - 1, p[1]), 1.0, 1e-15);
+    }
+    lowest = std::min(lowest, p[1]);
+  }
+  EXPECT_NEAR(lowest, -1.0, 1e-3);
+  expect_point(point_at(view, domain.upper), {0, 0});  // closed: back to the first vertex
+  // The old POLYLINE with VERTEX entities, the same half circle, and a 3D one.
+  const auto old = read_valid(dxf("0\nPOLYLINE\n66\n1\n10\n0\n20\n0\n30\n0\n0\nVERTEX\n10\n0\n20\n0\n42\n1\n"
+                                  "0\nVERTEX\n10\n2\n20\n0\n0\nSEQEND\n"
+                                  "0\nPOLYLINE\n66\n1\n70\n8\n0\nVERTEX\n10\n0\n20\n0\n30\n1\n70\n32\n"
+                                  "0\nVERTEX\n10\n1\n20\n1\n30\n2\n70\n32\n0\nSEQEND\n"));
+  ASSERT_EQ(old.curves.size(), 2u);
+  EXPECT_EQ(dimension_of(old.curves[1].curve), 3);
+  expect_point(point_at(curve_view(old.curves[1].curve), 1.0), {1, 1, 2});
+}
+
+TEST(DxfRead, SplinesWithControlPointsKnotsAndWeights) {
+  const BSplineCurve circle = make_circle(0.0, 0.0, 2.0).value();
+  std::string entity = "0\nSPLINE\n70\n12\n71\n2\n72\n12\n73\n9\n";
+  for (double k : circle.knots()) entity += fmt::format("40\n{}\n", k);
+  for (double w : circle.weights()) entity += fmt::format("41\n{}\n", w);
+  for (std::size_t i = 0; i < circle.control_points().size(); ++i)
+    entity += fmt::format("10\n{}\n20\n{}\n30\n0\n", circle.control_points()[i][0], circle.control_points()[i][1]);
+  const auto drawing = read_valid(dxf(entity));
+  EXPECT_EQ(std::get<BSplineCurve>(drawing.curves.at(0).curve), circle);  // exactly the curve written
+}
+
+TEST(DxfRead, SplinesWithFitPointsOnlyPassThroughThem) {
+  const auto drawing = read_valid(dxf("0\nSPLINE\n71\n3\n74\n5\n11\n0\n21\n0\n11\n1\n21\n2\n11\n3\n21\n3\n"
+                                      "11\n5\n21\n1\n11\n6\n21\n-1\n"));
+  const auto& spline = std::get<BSplineCurve>(drawing.curves.at(0).curve);
+  expect_point(point_at(spline, spline.knots().front()), {0, 0});
+  expect_point(point_at(spline, spline.knots().back()), {6, -1}, 1e-13);
+}
+
+TEST(DxfRead, HeaderUnitsAndSkippedEntities) {
+  const auto drawing = read_valid(dxf("0\nTEXT\n1\nhello\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n",
+                                      "9\n$ACADVER\n1\nAC1015\n9\n$INSUNITS\n70\n4\n"));
+  EXPECT_EQ(drawing.insunits, 4);
+  ASSERT_EQ(drawing.skipped.size(), 1u);
+  EXPECT_EQ(drawing.skipped[0], "line 19: TEXT");
+}
+
+TEST(DxfRead, FileErrorsNameTheirLine) {
+  const auto message = [](const std::string& text) {
+    auto drawing = parse_dxf_drawing(text, "t.dxf");
+    return drawing ? std::string("(read)") : drawing.error().message;
+  };
+  EXPECT_EQ(message("0\nSECTION\nSECTION\n"), "t.dxf, line 3: 'SECTION' is not a group code (a whole number); a "
+                                              "DXF file alternates code and value lines");
+  EXPECT_EQ(message("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n"),
+            "t.dxf, line 7: the file ends after group code 10, before its value");
+  EXPECT_EQ(message("0\nSECTION\n2\nENTITIES\n0\nLINE\n"),
+            "t.dxf, line 1: the ENTITIES section has no ENDSEC (the file is cut short)");
+  EXPECT_EQ(message("0\nSECTION\n2\nENTITIES\n0\nENDSEC\n"), "t.dxf: the file ends without EOF (it is cut short, or not DXF)");
+  EXPECT_EQ(message(std::string("AutoCAD Binary DXF\r\n\x1a\0", 23)),
+            "t.dxf: a binary DXF, casteljau reads ASCII DXF (save as ASCII)");
+  auto bad = parse_dxf_drawing(dxf("0\nLINE\n5\nA1\n10\nnan\n0\nCIRCLE\n10\n0\n20\n0\n40\n-1\n"), "t.dxf");
+  ASSERT_TRUE(bad);
+  ASSERT_EQ(bad->problems.size(), 2u);
+  EXPECT_EQ(bad->problems[0].message, "t.dxf, line 11, LINE (handle A1): line 16, group 10: 'nan' is NaN, numbers must be finite");
+  EXPECT_EQ(bad->problems[1].message, "t.dxf, line 17, CIRCLE: the radius must be > 0, got -1");
+}
+
+TEST(DxfWrite, RoundTripsTheSameDoubles) {
+  std::vector<Model> models{make_circle(1.0, -2.0, 0.3).value(),
+                            BezierCurve::make(PointArray::make(3, {0.1, 0.2, 0.3, 1, 2, 3, -4, 5, 0.7}).value(),
+                                              {1.0, 2.5, 0.5})
+                                .value(),
+                            BezierCurve::make(PointArray::make(2, {0, 0, 1, 1, 2, 0, 3, 1}).value()).value()};
+  const std::string text = write_dxf_drawing(models, 4).value();
+  EXPECT_NE(text.find("AC1015"), std::string::npos);
+  const auto back = read_valid(text);
+  EXPECT_EQ(back.insunits, 4);
+  ASSERT_EQ(back.curves.size(), 3u);
+  // The drawing holds a 3D curve, so all read back in R^3; the plane ones with z = 0.
+  EXPECT_EQ(to_json(back.curves[1].curve), to_json(to_bspline(models[1]).value()));
+  const auto& circle = std::get<BSplineCurve>(back.curves[0].curve);
+  EXPECT_EQ(circle.knots().size(), std::get<BSplineCurve>(models[0]).knots().size());
+  for (std::size_t i = 0; i < circle.control_points().size(); ++i) {
+    EXPECT_EQ(circle.control_points()[i][0], std::get<BSplineCurve>(models[0]).control_points()[i][0]);
+    EXPECT_EQ(circle.control_points()[i][2], 0.0);
+  }
+  const std::vector<Model> plane{models[0], models[2]};
+  const auto flat = read_valid(write_dxf_drawing(plane).value());
+  EXPECT_EQ(to_json(flat.curves[0].curve), to_json(models[0]));
+  EXPECT_EQ(to_json(flat.curves[1].curve), to_json(to_bspline(models[2]).value()));
+}
+
+TEST(DxfWrite, RefusesWhatDxfCannotHold) {
+  const std::vector<Model> line4{BezierCurve::make(PointArray::make(4, {0, 0, 0, 0, 1, 1, 1, 1}).value()).value()};
+  EXPECT_EQ(write_dxf_drawing(line4).error().message, "curve 0 lives in R^4, DXF holds plane and space curves");
+}
+
+// Any bytes, and any prefix of a valid file, read without a crash.
+RC_GTEST_PROP(DxfRead, AnyBytesOrPrefixReadWithoutACrash, ()) {
+  const std::string valid =
+      dxf("0\nLWPOLYLINE\n90\n3\n70\n1\n10\n0\n20\n0\n42\n0.5\n10\n2\n20\n0\n10\n1\n20\n1\n42\n-2\n"
+          "0\nSPLINE\n71\n2\n40\n0\n40\n0\n40\n0\n40\n1\n40\n1\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n10\n2\n20\n0\n"
+          "0\nELLIPSE\n10\n0\n20\n0\n11\n1\n21\n0\n40\n0.5\n");
+  const auto cut = *rc::gen::inRange<std::size_t>(0, valid.size() + 1);
+  auto drawing = parse_dxf_drawing(valid.substr(0, cut), "t.dxf");
+  if (cut == valid.size()) {
+    RC_ASSERT(drawing.has_value());
+    RC_ASSERT(drawing->problems.empty());
+    RC_ASSERT(drawing->curves.size() == 3u);
+  }
+  const auto bytes = *rc::gen::container<std::string>(
+      rc::gen::element<char>('0', '1', '2', '4', '\n', ' ', 'S', 'E', 'C', 'T', 'I', 'O', 'N', 'L', '-', '.'));
+  (void)parse_dxf_drawing("0\nSECTION\n2\nENTITIES\n" + bytes, "t.dxf");
+}
+
+}  // namespace
+}  // namespace casteljau
