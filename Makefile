@@ -11,6 +11,7 @@ export NODE_PATH := /usr/share/nodejs
 # Build, test and demo dependencies (Debian package names).
 PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark-dev \
   librapidcheck-dev libgmp-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev libpugixml-dev \
+  libfreetype-dev fonts-dejavu-core fonts-cantarell \
   libcairo2-dev poppler-utils emscripten python3-dev python3-numpy python3-scipy \
   python3-matplotlib python3-pytest python3-hypothesis python3-meshio \
   pybind11-dev python3-pybind11 chromium python3-ezdxf

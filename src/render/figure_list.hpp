@@ -41,9 +41,10 @@ Expected<std::vector<GalleryFigure>> surface_gallery_figures();
 /// Errors: a missing or malformed head.csv in `examples_dir`.
 Expected<std::vector<GalleryFigure>> query_gallery_figures(const std::filesystem::path& examples_dir);
 
-/// The figures of drawings read (issue 17; gallery_drawings.cpp, from 39): an
-/// SVG drawing of `examples_dir` with the control polygons of its pieces.
-/// Errors: a missing sailboat.svg, or one with problems.
+/// The figures of drawings read (issue 17; gallery_drawings.cpp, 39 and 40):
+/// an SVG drawing of `examples_dir` with the control polygons of its pieces,
+/// a word in DejaVu Sans with its on- and off-curve points. Errors: a missing
+/// sailboat.svg or one with problems, a missing font (fonts-dejavu-core).
 Expected<std::vector<GalleryFigure>> drawing_gallery_figures(const std::filesystem::path& examples_dir);
 
 }  // namespace casteljau::render::detail

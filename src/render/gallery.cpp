@@ -426,7 +426,7 @@ std::span<const GallerySection> gallery_sections() {
       {35, 38,
        "questions asked of a curve: equal-parameter against equal-arc-length samples on the head, curvature combs "
        "of the car's C¹ and C² interpolants, the head's closest-point field, intersections with their kinds"},
-      {39, 39, "drawings read: an SVG drawing with the control polygons of its Bézier pieces"},
+      {39, 40, "drawings read: an SVG drawing with the control polygons of its Bézier pieces, a word in a TrueType font with its on- and off-curve points"},
   };
   return kSections;
 }

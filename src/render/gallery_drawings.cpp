@@ -1,6 +1,7 @@
 // The gallery's figures of drawings casteljau reads (issue 17): an SVG
-// drawing of examples/ read into curves, drawn with the control polygon and
-// control points of every Bézier piece over it (figure_list.hpp).
+// drawing of examples/ read into curves, and a word set in a TrueType font,
+// each drawn with the control polygons and control points of its Bézier
+// pieces (figure_list.hpp).
 #include <fmt/format.h>
 
 #include <cstddef>
@@ -8,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "casteljau/io/font.hpp"
 #include "casteljau/io/svg_drawing.hpp"
 #include "figure_list.hpp"
 
@@ -61,11 +63,51 @@ Expected<GalleryFigure> svg_drawing_figure(const std::filesystem::path& examples
       std::move(figure)};
 }
 
+/// Debian's DejaVu Sans (fonts-dejavu-core, which make demo installs).
+constexpr const char* kGalleryFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+Expected<GalleryFigure> font_figure() {
+  auto text = text_outline("Bézier", kGalleryFont);
+  if (!text) return text.error();
+  Panel panel;
+  panel.equal_aspect = true;
+  std::vector<Vec2> on, off;
+  std::size_t quadratics = 0;
+  for (const GlyphContour& contour : text->contours) {
+    CurveItem item{{}, solid(colors::black, 1.8), "", fmt::format("glyph {}", contour.glyph)};
+    for (const BezierCurve& piece : contour.curve.pieces()) {
+      const auto points = plane_points(piece.control_points());
+      on.push_back(points.front());
+      if (piece.degree() == 2) {
+        ++quadratics;
+        off.push_back(points[1]);
+        panel.polylines.push_back({points, dashed(cycle_color(0), 0.9), ""});
+      }
+      item.pieces.push_back(piece);
+    }
+    panel.curves.push_back(std::move(item));
+  }
+  panel.markers.push_back({on, colors::red, 5.0 * kPixelsPerPoint, "on-curve points (piece ends)"});
+  panel.markers.push_back({off, cycle_color(0), 5.0 * kPixelsPerPoint, "off-curve control points",
+                           MarkerShape::diamond});
+  Figure figure = figure_of(fmt::format("\"Bézier\" in {} (TrueType quadratic outlines)", text->font_name), 1200, 560, 1);
+  figure.panels.push_back(std::move(panel));
+  return GalleryFigure{
+      "40_font_outlines",
+      fmt::format("casteljau text: the word set in DejaVu Sans by FreeType's advances and kerning, in font units ({} "
+                  "to the em): {} contours, {} quadratic Bézier pieces whose control points are the font's off-curve "
+                  "points (diamonds, polygons dashed); where two off-curve points follow each other TrueType implies "
+                  "the on-curve point midway (the discs between diamonds). The é is a composite glyph.",
+                  text->units_per_em, text->contours.size(), quadratics),
+      std::move(figure)};
+}
+
 }  // namespace
 
 Expected<std::vector<GalleryFigure>> drawing_gallery_figures(const std::filesystem::path& examples_dir) {
   std::vector<GalleryFigure> figures;
   if (auto ok = append_figure(figures, svg_drawing_figure(examples_dir)); !ok) return ok.error();
+  if (auto ok = append_figure(figures, font_figure()); !ok) return ok.error();
   return figures;
 }
 
