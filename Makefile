@@ -21,7 +21,7 @@ PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark
 # Peers measured beside casteljau by `make bench`.
 BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
   libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev \
-  cargo librust-kurbo-dev librust-lyon-geom-dev
+  cargo librust-kurbo-dev librust-lyon-geom-dev python3-svgelements
 
 CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON)
 # The bench build never gets -Werror: at -O3 -march=native GCC 12 warns inside

@@ -35,7 +35,7 @@ import sys
 from collections import OrderedDict
 from pathlib import Path
 
-PEERS = ("occt", "sisl", "eigen", "scipy", "lib2geom", "gsl", "kurbo", "lyon")
+PEERS = ("occt", "sisl", "eigen", "scipy", "lib2geom", "gsl", "kurbo", "lyon", "svgelements", "ezdxf")
 KIND_ORDER = {"casteljau": 0, "peer": 1, "baseline": 2}
 
 # The Debian packages whose versions a run reports (the peers, the harness, the compiler).
@@ -69,6 +69,7 @@ fractions are lower by nature.
 | W7 | | | no hardware limit is stated: the work per query depends on how many pieces lie near it; rows report misses against the brute-force oracle |
 | W8 | | | no hardware limit is stated: the work per pair depends on how the curves meet; rows report misses and spurious points against the exact oracle |
 | W9 | | | no hardware limit is stated: the quadrature's node count depends on the curve; rows report error_rel against the oracle |
+| W10 | | | no hardware limit is stated: rows are MB of file read per second; each checks the count of segments or entities it read |
 """
 
 
@@ -537,6 +538,7 @@ WORKLOAD_TITLES = OrderedDict(
     W7="W7: closest point of random queries on a plane cubic Bézier and on W1's curve (in 3D and on the xy plane), time per query",
     W8="W8: intersections of 10⁴ pairs of plane cubic Béziers (10% tangent, 10% near-tangent), time per pair",
     W9="W9: arc length of W1's curve (997 cubic spans in 3D) within 1e-9 relative, time per length",
+    W10="W10: reading a 10 MB SVG path and a 10 MB DXF drawing (generated, seeded) into curves, MB of file per second",
 )
 
 
@@ -562,7 +564,7 @@ def results_markdown(rows, probe, context):
         out += ["", "All cores (the same batch cut into one chunk per core, unpinned):", ""] + cores
     out += ["<!-- summary:end -->", ""]
     out += ["“casteljau ÷ best peer” is how many times faster casteljau's row is than the fastest peer "
-            "(OpenCASCADE, SISL, Eigen, scipy, lib2geom, GSL) on the same work in this run; in W6 only peers "
+            "(OpenCASCADE, SISL, Eigen, scipy, lib2geom, GSL, kurbo, lyon_geom, svgelements, ezdxf) on the same work in this run; in W6 only peers "
             "within the tolerance count, and the segment counts are compared with the optimum.", ""]
     out += ["## Hardware limits of this run", ""]
     probe_rows = [r for r in rows.values() if r.workload == "HW"]

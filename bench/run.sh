@@ -28,6 +28,8 @@ cpu="${CASTELJAU_BENCH_CPU:-0}"
 out_dir="${CASTELJAU_BENCH_OUT:-out/bench}"
 filter="${CASTELJAU_BENCH_FILTER:-.}"
 mkdir -p "$out_dir"
+# W10 writes its generated drawings here, for the Python peers to read.
+export CASTELJAU_BENCH_DATA="${CASTELJAU_BENCH_DATA:-$out_dir/w10}"
 
 pin=()
 if command -v taskset >/dev/null 2>&1; then pin=(taskset -c "$cpu"); fi
@@ -162,6 +164,9 @@ fi
 run_python_rows w4_scipy.py "W4/n10000/scipy-make_interp_spline-natural W4/n1000000/scipy-CubicSpline-periodic" \
   --filter "$filter"
 run_python_rows w5_scipy.py "W5/grid/scipy-bisplev"
+# W10: python3-svgelements and ezdxf read the files w10_drawing_readers wrote.
+run_python_rows w10_readers.py "W10/svg-10MB/svgelements-SVG.parse W10/dxf-10MB/ezdxf-readfile" \
+  --filter "$filter" --data "$CASTELJAU_BENCH_DATA"
 
 seconds=$(( $(date +%s) - started ))
 echo "== report -> $out_dir/results.json, $out_dir/RESULTS.md ($seconds s of benchmarks)"
