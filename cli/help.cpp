@@ -41,7 +41,7 @@ constexpr std::array kEntries{
           "the six Bernstein polynomials of degree 5"},
     Entry{"gallery", "Every seed figure as SVG and PNG, with an index.html", "casteljau gallery out/gallery",
           "the figures, and out/gallery/index.html showing them all"},
-    Entry{"convert", "A model rewritten as Bézier pieces or as a B-spline",
+    Entry{"convert", "A model rewritten as Bézier pieces, a B-spline, an SVG or a DXF drawing",
           "casteljau convert examples/notebook_polygon.csv --to bspline",
           "the polygon's Bézier curve as the same curve on clamped B-spline knots"},
     Entry{"interpolate", "A curve through the points of a CSV file",
@@ -60,6 +60,9 @@ constexpr std::array kEntries{
     Entry{"tessellate", "A triangle mesh of surfaces (OBJ, STL, PLY)",
           "casteljau tessellate examples/sphere.json --tolerance 0.001 -o sphere.stl",
           "a watertight triangle mesh within 0.001 of the NURBS sphere"},
+    Entry{"text", "The glyph outlines of a text in a font, as closed curves",
+          "casteljau text Bezier --font /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf --size 10 -o word.json",
+          "each contour of the word's glyphs in DejaVu Sans, an em 10 units long"},
 };
 
 /// The subcommand's entry in kEntries; every subcommand has one.
