@@ -250,9 +250,22 @@ class Reader {
                                                                  const Viewport& outer) {
     const auto x = length(node, "x", 0.0, outer.width), y = length(node, "y", 0.0, outer.height);
     const pugi::xml_node& size_from = sizing.attribute("width") || sizing.attribute("height") ? sizing : node;
-    const auto full = [](std::optional<double> d) { return d.value_or(0.0); };
-    const auto width = length(size_from, "width", full(outer.width), outer.width);
-    const auto height = length(size_from, "height", full(outer.height), outer.height);
+    // No width or height, and an outer viewport of unknown size (a root with
+    // neither viewBox nor absolute size): without a viewBox the content is
+    // only moved by (x, y); with one, its scale is unknown, a problem.
+    const bool sized = size_from.attribute("width") && size_from.attribute("height");
+    if (!sized && (!outer.width || !outer.height)) {
+      if (!x || !y) return std::nullopt;
+      if (node.attribute("viewBox")) {
+        problem(node, "a viewBox needs the viewport's width and height, which neither this element nor its "
+                      "viewport gives",
+                ErrorKind::invalid_argument);
+        return std::nullopt;
+      }
+      return std::pair{io_detail::svg_translate(*x, *y), outer};
+    }
+    const auto width = length(size_from, "width", outer.width.value_or(0.0), outer.width);
+    const auto height = length(size_from, "height", outer.height.value_or(0.0), outer.height);
     if (!x || !y || !width || !height) return std::nullopt;
     if (*width < 0.0 || *height < 0.0) {
       problem(node, "a negative width or height", ErrorKind::invalid_argument);

@@ -259,6 +259,12 @@ TEST(SvgDrawing, MillimetresThroughTheRootsSizeAndViewBox) {
 TEST(SvgDrawing, NestedViewportsAndUse) {
   const auto nested = read_valid("<svg x='10' y='10' width='20' height='20' viewBox='0 0 2 2'><path d='M0 0L2 2'/></svg>");
   expect_near(points_of(nested.curves.at(0)), {10, 10, 30, 30});
+  // In a root of unknown size, a nested svg without a size only moves its content.
+  const auto unsized = read_valid("<svg x='2' y='3'><path d='M0 0L1 1'/></svg>");
+  EXPECT_EQ(points_of(unsized.curves.at(0)), (Flat{2, 3, 3, 4}));
+  EXPECT_EQ(problems_of("<svg viewBox='0 0 1 1'><path d='M0 0L1 1'/></svg>"),
+            std::vector<std::string>{"t.svg, line 2, <svg>: a viewBox needs the viewport's width and height, which "
+                                     "neither this element nor its viewport gives"});
   const auto use = read_valid(
       "<defs><path id='p' d='M0 0L1 0'/></defs><use href='#p' x='5' y='6'/>"
       "<use xlink:href='#p' transform='scale(2)' x='1'/>",
