@@ -20,6 +20,7 @@
 
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/io/model_file.hpp"
+#include "casteljau/io/svg_writer.hpp"
 
 namespace casteljau {
 namespace {
@@ -379,6 +380,41 @@ RC_GTEST_PROP(SvgDrawing, AnyPrefixOrBytesReadWithoutACrash, ()) {
   const auto bytes = *rc::gen::container<std::string>(rc::gen::element<char>('<', '>', '/', '=', '\'', 'g', 's', 'v',
                                                                             ' ', 'd', 'M', '1', 'x', 'L', '#'));
   (void)parse_svg_drawing("<svg>" + bytes, "t.svg");
+}
+
+}  // namespace
+}  // namespace casteljau
+
+namespace casteljau {
+namespace {
+
+// Lines, quadratics and cubics written by write_svg_drawing read back as the
+// same doubles, piece by piece (shortest round-trip numbers, absolute commands).
+RC_GTEST_PROP(SvgWriter, PolynomialPiecesOfDegreeAtMostThreeRoundTripExactly, ()) {
+  const int count = *rc::gen::inRange(1, 6);
+  std::vector<BezierCurve> pieces;
+  std::vector<double> start = {*rc::gen::inRange(-1000000, 1000000) * 1e-3, *rc::gen::inRange(-1000000, 1000000) * 1e-3};
+  for (int i = 0; i < count; ++i) {
+    const int degree = *rc::gen::inRange(1, 4);
+    std::vector<double> c = start;
+    for (int k = 0; k < degree; ++k) {
+      c.push_back(*rc::gen::inRange(-1000000, 1000000) * 1.37e-3);
+      c.push_back(*rc::gen::inRange(-1000000, 1000000) * 0.77e-3);
+    }
+    start = {c[c.size() - 2], c.back()};
+    pieces.push_back(BezierCurve::make(PointArray::make(2, std::move(c)).value()).value());
+  }
+  const std::vector<SvgCurve> curves{SvgCurve{PiecewiseBezierCurve::make(pieces).value(), false, "path", "c", 1,
+                                              FillRule::nonzero, 1.0}};
+  const auto written = write_svg_drawing(curves, Tolerance{1e-6});
+  RC_ASSERT(written.has_value());
+  RC_ASSERT(written->approximated_pieces == 0u);
+  const auto back = parse_svg_drawing(written->text, "w.svg");
+  RC_ASSERT(back.has_value());
+  RC_ASSERT(back->problems.empty());
+  RC_ASSERT(back->curves.size() == 1u);
+  RC_ASSERT(back->curves[0].curve == curves[0].curve);
+  RC_ASSERT(back->curves[0].id == std::string("c"));
 }
 
 }  // namespace
