@@ -85,7 +85,8 @@ int convert_to_svg(const ConvertOptions& options) {
     tolerance = *number;
   }
   std::vector<SvgCurve> curves;
-  if (lowercase_extension(options.model) == ".svg") {
+  const bool from_svg = lowercase_extension(options.model) == ".svg";
+  if (from_svg) {
     const auto units = drawing_units_option(options.units);
     if (!units) return fail(units.error());
     auto drawing = read_svg_drawing(options.model, *units);
@@ -111,10 +112,10 @@ int convert_to_svg(const ConvertOptions& options) {
       curve.closed = std::equal(start.begin(), start.end(), end.begin());
       curves.push_back(std::move(curve));
     }
-    const double size = drawing_size(curves);
-    for (SvgCurve& curve : curves) curve.stroke_width = size > 0.0 ? size / 500.0 : 1.0;
   }
   const double size = drawing_size(curves);
+  if (!from_svg)
+    for (SvgCurve& curve : curves) curve.stroke_width = size > 0.0 ? size / 500.0 : 1.0;
   const double distance = tolerance.value_or(1e-6 * (size > 0.0 ? size : 1.0));
   auto written = write_svg_drawing(curves, Tolerance{distance});
   if (!written) return fail(with_context(written.error(), "--to svg"));

@@ -193,6 +193,19 @@ Expected<Model> polyline_model(std::vector<BezierCurve> pieces) {
   return Model{std::move(*curve)};
 }
 
+/// The curve of a polyline's vertices (in `ocs`) and the bulge of the segment
+/// after each: a line or an exact arc per segment, the closing one when `closed`.
+Expected<Model> polyline_curve(const std::vector<Vec3d>& vertices, const std::vector<double>& bulges, const Ocs& ocs,
+                               bool closed) {
+  if (vertices.size() < 2) return Error{fmt::format("a polyline needs 2 vertices, it has {}", vertices.size())};
+  std::vector<BezierCurve> pieces;
+  const std::size_t segments = closed ? vertices.size() : vertices.size() - 1;
+  for (std::size_t i = 0; i < segments; ++i)
+    if (Status ok = add_segment(pieces, ocs, vertices[i], vertices[(i + 1) % vertices.size()], bulges[i]); !ok)
+      return ok.error();
+  return polyline_model(std::move(pieces));
+}
+
 // --- one reader per entity ---------------------------------------------------
 
 Expected<Model> read_line(const Entity& e) {
@@ -269,13 +282,7 @@ Expected<Model> read_lwpolyline(const Entity& e) {
     }
   }
   const bool closed = (static_cast<int>(*flags) & 1) != 0;
-  if (vertices.size() < 2) return Error{fmt::format("a polyline needs 2 vertices, it has {}", vertices.size())};
-  std::vector<BezierCurve> pieces;
-  const std::size_t segments = closed ? vertices.size() : vertices.size() - 1;
-  for (std::size_t i = 0; i < segments; ++i)
-    if (Status ok = add_segment(pieces, *ocs, vertices[i], vertices[(i + 1) % vertices.size()], bulges[i]); !ok)
-      return ok.error();
-  return polyline_model(std::move(pieces));
+  return polyline_curve(vertices, bulges, *ocs, closed);
 }
 
 /// POLYLINE with its VERTEX entities (SEQEND ends them).
@@ -303,13 +310,7 @@ Expected<Model> read_polyline(const Entity& e, const std::vector<Entity>& vertic
     points.push_back(*p);
     bulges.push_back(space ? 0.0 : *bulge);
   }
-  if (points.size() < 2) return Error{fmt::format("a polyline needs 2 vertices, it has {}", points.size())};
-  std::vector<BezierCurve> pieces;
-  const std::size_t segments = closed ? points.size() : points.size() - 1;
-  for (std::size_t i = 0; i < segments; ++i)
-    if (Status ok = add_segment(pieces, *ocs, points[i], points[(i + 1) % points.size()], bulges[i]); !ok)
-      return ok.error();
-  return polyline_model(std::move(pieces));
+  return polyline_curve(points, bulges, *ocs, closed);
 }
 
 Expected<Model> read_spline(const Entity& e) {
@@ -418,8 +419,6 @@ bool is_flat(const Model& model) {
   else check(std::get<BSplineCurve>(model).control_points());
   return flat;
 }
-
-std::size_t control_points_of(const Model& model) { return control_point_count(model); }
 
 }  // namespace
 
@@ -548,7 +547,7 @@ Expected<DxfDrawing> parse_dxf_drawing(std::string_view text, const std::string&
                                        model.error().kind});
       continue;
     }
-    total_points += control_points_of(*model);
+    total_points += control_point_count(*model);
     if (total_points > tolerances::kMaxControlPoints)
       return Error{fmt::format("{}: the drawing needs more than {} control points", source,
                                tolerances::kMaxControlPoints),

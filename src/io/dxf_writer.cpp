@@ -143,17 +143,23 @@ void tables(Writer& w) {
   w.group(0, "ENDSEC");
 }
 
+/// An entity's common groups: its type, a new handle, its owner, the
+/// AcDbEntity subclass (in paper space: 67 1) on layer 0.
+void entity_start(Writer& w, const char* type, const char* owner, bool paper) {
+  w.group(0, type);
+  w.group(5, w.handle());
+  w.group(330, owner);
+  w.group(100, "AcDbEntity");
+  if (paper) w.group(67, 1);
+  w.group(8, "0");
+}
+
 void blocks(Writer& w) {
   w.group(0, "SECTION");
   w.group(2, "BLOCKS");
   for (auto [name, record, paper] : {std::tuple{"*Model_Space", kModelSpace, false},
                                      std::tuple{"*Paper_Space", kPaperSpace, true}}) {
-    w.group(0, "BLOCK");
-    w.group(5, w.handle());
-    w.group(330, record);
-    w.group(100, "AcDbEntity");
-    if (paper) w.group(67, 1);
-    w.group(8, "0");
+    entity_start(w, "BLOCK", record, paper);
     w.group(100, "AcDbBlockBegin");
     w.group(2, name);
     w.group(70, 0);
@@ -162,12 +168,7 @@ void blocks(Writer& w) {
     w.real(30, 0.0);
     w.group(3, name);
     w.group(1, "");
-    w.group(0, "ENDBLK");
-    w.group(5, w.handle());
-    w.group(330, record);
-    w.group(100, "AcDbEntity");
-    if (paper) w.group(67, 1);
-    w.group(8, "0");
+    entity_start(w, "ENDBLK", record, paper);
     w.group(100, "AcDbBlockEnd");
   }
   w.group(0, "ENDSEC");
@@ -175,11 +176,7 @@ void blocks(Writer& w) {
 
 void spline(Writer& w, const BSplineCurve& curve) {
   const int d = curve.dimension();
-  w.group(0, "SPLINE");
-  w.group(5, w.handle());
-  w.group(330, kModelSpace);
-  w.group(100, "AcDbEntity");
-  w.group(8, "0");
+  entity_start(w, "SPLINE", kModelSpace, false);
   w.group(100, "AcDbSpline");
   if (d == 2) {  // the plane z = 0, its normal the extrusion direction
     w.real(210, 0.0);

@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <variant>
 #include <utility>
@@ -21,23 +23,29 @@
 namespace casteljau {
 namespace {
 
-/// A drawing's first problem as the error, saying how many more there are.
-Error first_problem(const std::vector<Error>& problems) {
-  Error first = problems.front();
-  if (problems.size() > 1)
-    first.message += fmt::format(" (and {} more problem{})", problems.size() - 1, problems.size() > 2 ? "s" : "");
-  return first;
+/// What a drawing's reading refuses (SVG and DXF alike): its first problem,
+/// saying how many more there are, or a drawing with no curve (`what` names
+/// what it lacks), naming the first thing it skipped.
+std::optional<Error> refusal(const std::vector<Error>& problems, bool no_curves, const std::vector<std::string>& skipped,
+                             const std::string& source, std::string_view what) {
+  if (!problems.empty()) {
+    Error first = problems.front();
+    if (problems.size() > 1)
+      first.message += fmt::format(" (and {} more problem{})", problems.size() - 1, problems.size() > 2 ? "s" : "");
+    return first;
+  }
+  if (!no_curves) return std::nullopt;
+  return Error{fmt::format("{}: the drawing has no {} to read{}", source, what,
+                           skipped.empty() ? "" : fmt::format(" ({})", skipped.front())),
+               ErrorKind::invalid_argument};
 }
 
 /// One piecewise_bezier model per subpath of the drawing; its problems are errors.
 Expected<std::vector<Model>> models_of_drawing(std::string_view text, const std::string& source, DrawingUnits units) {
   auto drawing = parse_svg_drawing(text, source, units);
   if (!drawing) return drawing.error();
-  if (!drawing->problems.empty()) return first_problem(drawing->problems);
-  if (drawing->curves.empty())
-    return Error{fmt::format("{}: the drawing has no path or shape to read{}", source,
-                             drawing->skipped.empty() ? "" : fmt::format(" ({})", drawing->skipped.front())),
-                 ErrorKind::invalid_argument};
+  if (auto refused = refusal(drawing->problems, drawing->curves.empty(), drawing->skipped, source, "path or shape"))
+    return *refused;
   std::vector<Model> models;
   models.reserve(drawing->curves.size());
   for (SvgCurve& curve : drawing->curves) models.emplace_back(std::move(curve.curve));
@@ -68,11 +76,8 @@ double dxf_millimetres(int insunits) {
 Expected<std::vector<Model>> models_of_dxf(std::string_view text, const std::string& source, DrawingUnits units) {
   auto drawing = parse_dxf_drawing(text, source);
   if (!drawing) return drawing.error();
-  if (!drawing->problems.empty()) return first_problem(drawing->problems);
-  if (drawing->curves.empty())
-    return Error{fmt::format("{}: the drawing has no curve entity to read{}", source,
-                             drawing->skipped.empty() ? "" : fmt::format(" ({})", drawing->skipped.front())),
-                 ErrorKind::invalid_argument};
+  if (auto refused = refusal(drawing->problems, drawing->curves.empty(), drawing->skipped, source, "curve entity"))
+    return *refused;
   double scale = 1.0;
   if (units == DrawingUnits::millimetres) {
     scale = dxf_millimetres(drawing->insunits);
