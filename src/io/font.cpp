@@ -120,7 +120,8 @@ std::optional<PiecewiseBezierCurve> contour_curve(const FT_Outline& outline, int
     } else {  // cubic: this and the next point are the two inner control points
       const Vec2 c1 = at(i);
       const Vec2 c2 = k + 1 < order.size() ? at(order[k + 1]) : origin;
-      const Vec2 end = k + 2 < order.size() && k + 2 + 1 != order.size() ? at(order[k + 2]) : origin;
+      // The end: the point after them, the contour's origin when that is the last one (or past it).
+      const Vec2 end = k + 3 < order.size() ? at(order[k + 2]) : origin;
       add({current, c1, c2, end});
       current = end;
       k += 2;
