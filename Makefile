@@ -14,10 +14,11 @@ PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark
   libfreetype-dev fonts-dejavu-core fonts-cantarell \
   libcairo2-dev poppler-utils emscripten python3-dev python3-numpy python3-scipy \
   python3-matplotlib python3-pytest python3-hypothesis python3-meshio \
-  pybind11-dev python3-pybind11 chromium python3-ezdxf
+  pybind11-dev python3-pybind11 chromium python3-ezdxf libocct-data-exchange-dev
 # Checkers we did not write: chromium reads SVG in tests/svg/ (driven by npm's
 # playwright-core, installed into tests/svg/node_modules by deps); python3-ezdxf
-# reads and writes DXF in tests/python/test_dxf_ezdxf.py.
+# reads and writes DXF in tests/python/test_dxf_ezdxf.py; OpenCASCADE
+# (libocct-data-exchange-dev) reads IGES and STEP in tests/exchange/.
 # Peers measured beside casteljau by `make bench`.
 BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
   libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev \

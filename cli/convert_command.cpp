@@ -1,13 +1,15 @@
 // casteljau convert: a model file rewritten in another representation
 // (docs/cli.md, "convert"): the curve kinds of model JSON, and SVG drawings
-// (io/svg_writer.hpp), DXF drawings (io/dxf.hpp). iges and step are refused
-// as not supported yet;
-// meshes are tessellate's, G-code gcode's. The output is built in memory and
+// (io/svg_writer.hpp), DXF drawings (io/dxf.hpp), IGES and STEP files for
+// CAD (io/cad_exchange.hpp); meshes are tessellate's, G-code gcode's. The output is built in memory and
 // written atomically: on bad input nothing is written.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -16,6 +18,7 @@
 #include <vector>
 
 #include "casteljau/bspline/bezier_pieces.hpp"
+#include "casteljau/io/cad_exchange.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_file.hpp"
@@ -150,26 +153,69 @@ int convert_to_dxf(const ConvertOptions& options) {
   return write_output(options.output, *written);
 }
 
+/// When the file is written, UTC, as ExchangeHeader wants it: now, or
+/// SOURCE_DATE_EPOCH when set (reproducible builds' convention: the same
+/// input then gives the same bytes).
+std::string exchange_timestamp() {
+  std::time_t now = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH"); epoch != nullptr && *epoch != '\0') {
+    char* end = nullptr;
+    const long long seconds = std::strtoll(epoch, &end, 10);
+    if (*end == '\0' && seconds >= 0) now = static_cast<std::time_t>(seconds);
+  }
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", &utc);
+  return text;
+}
+
+/// --to iges, --to step: each model an exact B-spline curve or surface of a
+/// file for CAD, its numbers labelled millimetres.
+int convert_to_cad(const ConvertOptions& options, bool iges) {
+  const char* format = iges ? "iges" : "step";
+  if (given(options.tolerance_option))
+    return fail(fmt::format("--tolerance applies to --to svg (the cubics' distance); --to {} is exact", format));
+  const auto models = read_model_file(options.model, options.units);
+  if (!models) return fail(models.error());
+  std::size_t surfaces = 0;
+  for (std::size_t m = 0; m < models->size(); ++m) {
+    const Model& model = (*models)[m];
+    const int d = dimension_of(model);
+    if (d != 2 && d != 3)
+      return fail(fmt::format("--to {}: {} lives in R^{}, {} holds plane and space geometry", format,
+                              model_name(*models, m, options.model), d, iges ? "IGES" : "STEP"));
+    if (is_surface(model)) ++surfaces;
+  }
+  ExchangeHeader header;
+  const std::filesystem::path named = is_standard_output(options.output) ? options.model : options.output;
+  header.file_name = named.filename().string();
+  header.timestamp = exchange_timestamp();
+  auto written = iges ? write_iges(*models, header) : write_step(*models, header);
+  if (!written) return fail(with_context(written.error(), fmt::format("--to {}", format)));
+  if (int status = write_output(options.output, *written); status != 0) return status;
+  const std::size_t curves = models->size() - surfaces;
+  return write_summary(options.output,
+                       fmt::format("convert: {} curve{} and {} surface{} to {}, exact (every knot, control point and "
+                                   "weight as it is), in millimetres",
+                                   curves, curves == 1 ? "" : "s", surfaces, surfaces == 1 ? "" : "s",
+                                   iges ? "IGES 5.3 (entities 126 and 128)" : "STEP AP214"));
+}
+
 int run_convert(const ConvertOptions& options) {
   // --- the target format first: a typo should not wait for a large file ---
   const std::string& format = options.format;
   const bool to_pieces = format == "bezier-pieces", to_spline = format == "bspline", as_json = format == "json";
   if (format == "svg") return convert_to_svg(options);
   if (format == "dxf") return convert_to_dxf(options);
+  if (format == "iges" || format == "step") return convert_to_cad(options, format == "iges");
   if (!to_pieces && !to_spline && !as_json) {
-    for (const char* later : {"iges", "step"}) {
-      if (format == later) {
-        return fail(fmt::format("--to {}: this format is not supported yet by this version of casteljau "
-                                "(supported: bezier-pieces, bspline, json, svg, dxf)",
-                                format));
-      }
-    }
     for (const auto& [other, command] : {std::pair{"gcode", "casteljau gcode"}, std::pair{"obj", "casteljau tessellate"},
                                          std::pair{"stl", "casteljau tessellate"}, std::pair{"ply", "casteljau tessellate"}}) {
       if (format == other)
         return fail(fmt::format("--to {}: not a conversion of curves; {} writes it", format, command));
     }
-    return fail(fmt::format("--to '{}': unknown format (supported: bezier-pieces, bspline, json, svg, dxf)",
+    return fail(fmt::format("--to '{}': unknown format (supported: bezier-pieces, bspline, json, svg, dxf, iges, step)",
                             format.substr(0, 60)));
   }
   if (given(options.tolerance_option)) return fail("--tolerance applies to --to svg (the cubics' distance)");
@@ -210,10 +256,11 @@ void add_convert_command(CLI::App& app, int& status) {
       "clamped knots, a piecewise curve with its joints as knots of multiplicity p), json (the models as read); or "
       "svg, an SVG drawing of plane curves: lines, quadratics and cubics exactly, other pieces (rational, degree > "
       "3) as cubics within --tolerance, which the summary line and the file state; an SVG input keeps its ids, "
-      "fill rules and stroke widths; or dxf, a DXF R2000 drawing with each curve an exact SPLINE entity. iges and "
-      "step are not supported yet.");
+      "fill rules and stroke widths; or dxf, a DXF R2000 drawing with each curve an exact SPLINE entity; or iges "
+      "(IGES 5.3, entities 126 and 128) or step (STEP AP214), files for CAD with each curve and surface an exact "
+      "B-spline, numbers in millimetres.");
   CLI::Option* model = convert->add_option("MODEL", options->model, kModelFileHelp)->required();
-  convert->add_option("--to", options->format, "The target: bezier-pieces, bspline, json, svg or dxf")
+  convert->add_option("--to", options->format, "The target: bezier-pieces, bspline, json, svg, dxf, iges or step")
       ->type_name("FORMAT")
       ->required();
   options->tolerance_option =

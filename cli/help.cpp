@@ -41,7 +41,7 @@ constexpr std::array kEntries{
           "the six Bernstein polynomials of degree 5"},
     Entry{"gallery", "Every seed figure as SVG and PNG, with an index.html", "casteljau gallery out/gallery",
           "the figures, and out/gallery/index.html showing them all"},
-    Entry{"convert", "A model rewritten as Bézier pieces, a B-spline, an SVG or a DXF drawing",
+    Entry{"convert", "A model rewritten as Bézier pieces, a B-spline, SVG, DXF, or IGES and STEP for CAD",
           "casteljau convert examples/notebook_polygon.csv --to bspline",
           "the polygon's Bézier curve as the same curve on clamped B-spline knots"},
     Entry{"interpolate", "A curve through the points of a CSV file",

@@ -17,6 +17,7 @@
 
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/core/vec.hpp"
+#include "text.hpp"
 
 namespace casteljau {
 namespace {
@@ -38,32 +39,6 @@ std::string freetype_message(FT_Error error) {
     case FT_Err_Out_Of_Memory: return "out of memory";
     default: return fmt::format("FreeType error {}", error);
   }
-}
-
-/// The code points of UTF-8 text; an error names the first byte that is not
-/// part of a well-formed sequence.
-Expected<std::u32string> code_points(std::string_view text) {
-  std::u32string out;
-  for (std::size_t i = 0; i < text.size();) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    int length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-    char32_t value = length == 1 ? c : length == 2 ? (c & 0x1F) : length == 3 ? (c & 0x0F) : (c & 0x07);
-    bool ok = length > 0 && i + static_cast<std::size_t>(length) <= text.size();
-    for (int k = 1; ok && k < length; ++k) {
-      const unsigned char next = static_cast<unsigned char>(text[i + static_cast<std::size_t>(k)]);
-      ok = (next & 0xC0) == 0x80;
-      value = (value << 6) | (next & 0x3F);
-    }
-    // Overlong forms, surrogates and values past U+10FFFF are not UTF-8.
-    ok = ok && !(length == 2 && value < 0x80) && !(length == 3 && value < 0x800) && !(length == 4 && value < 0x10000) &&
-         !(value >= 0xD800 && value <= 0xDFFF) && value <= 0x10FFFF;
-    if (!ok)
-      return Error{fmt::format("the text is not UTF-8: byte {} (0x{:02x}) does not begin a character", i + 1, c),
-                   ErrorKind::parse};
-    out.push_back(value);
-    i += static_cast<std::size_t>(length);
-  }
-  return out;
 }
 
 /// The pieces of one contour of an outline, moved by (dx, dy) and scaled by
@@ -137,7 +112,7 @@ std::optional<PiecewiseBezierCurve> contour_curve(const FT_Outline& outline, int
 Expected<TextOutline> text_outline(std::string_view text, const std::filesystem::path& font, const TextLayout& layout) {
   if (layout.size && !(std::isfinite(*layout.size) && *layout.size > 0.0))
     return Error{fmt::format("the size must be a finite length > 0, got {}", *layout.size)};
-  auto characters = code_points(text);
+  auto characters = io_detail::code_points(text);
   if (!characters) return characters.error();
   FT_Library raw_library = nullptr;
   if (FT_Error error = FT_Init_FreeType(&raw_library); error != 0)

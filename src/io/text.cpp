@@ -77,4 +77,21 @@ bool has_extension(std::string_view path, std::string_view extension) {
   return true;
 }
 
+Expected<std::u32string> code_points(std::string_view text) {
+  std::u32string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const unsigned char lead = static_cast<unsigned char>(text[i]);
+    const std::size_t length = lead < 0x80 ? 1 : utf8_sequence(text.substr(i));
+    if (length == 0)
+      return Error{fmt::format("the text is not UTF-8: byte {} (0x{:02x}) does not begin a character", i + 1, lead),
+                   ErrorKind::parse};
+    // The lead byte keeps 7, 5, 4 or 3 bits; each continuation byte 6.
+    char32_t value = length == 1 ? lead : lead & (0x7F >> length);
+    for (std::size_t k = 1; k < length; ++k) value = (value << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+    out.push_back(value);
+    i += length;
+  }
+  return out;
+}
+
 }  // namespace casteljau::io_detail

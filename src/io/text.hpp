@@ -4,6 +4,8 @@
 #include <string>
 #include <string_view>
 
+#include "casteljau/core/expected.hpp"
+
 namespace casteljau::io_detail {
 
 /// `text` fit for a one-line error message: control characters, DEL and
@@ -16,6 +18,10 @@ std::string printable(std::string_view text, std::size_t limit = 60);
 
 /// "'text'" after printable().
 std::string in_quotes(std::string_view text, std::size_t limit = 60);
+
+/// The code points of UTF-8 text; an error (ErrorKind::parse) names the
+/// first byte that is not part of a well-formed sequence (RFC 3629).
+Expected<std::u32string> code_points(std::string_view text);
 
 /// Skips a UTF-8 byte order mark at the start of `text` (spreadsheet
 /// programs write one).

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "casteljau/bspline/knot_insertion.hpp"
+#include "casteljau/bspline/transform.hpp"
 #include "surface_rows.hpp"
 
 namespace casteljau {
@@ -28,6 +29,10 @@ Expected<BSplineSurface> refine_knots(const BSplineSurface& surface, Direction d
                                       std::span<const double> new_knots) {
   if (new_knots.empty()) return surface;
   return rebuilt(refine_knots(detail::wide_curve(surface, direction), new_knots), surface, direction);
+}
+
+BSplineSurface clamped(const BSplineSurface& surface, Direction direction) {
+  return detail::surface_from_wide(clamped(detail::wide_curve(surface, direction)), direction, surface);
 }
 
 }  // namespace casteljau

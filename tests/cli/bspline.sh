@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # casteljau on bspline models: eval (points, derivatives, --samples over
 # [t_p, t_{n+1}], the domain check), convert (bezier-pieces, bspline, json;
-# the formats not supported yet), plot, and bad input (exit 2, one line on
+# the formats refused), plot, and bad input (exit 2, one line on
 # stderr naming the field, nothing written).
 # Known values are worked by hand on dyadic data, so they are exact (below).
 # Usage: bash bspline.sh CASTELJAU EXAMPLES_DIR
@@ -77,8 +77,10 @@ model space.json '{"type": "bezier", "control_points": [[0,0,0],[1,1,1]]}'
 expect_error "--to svg of a 3D curve" "--to svg: the bezier model in '$work/space.json' lives in R^3, SVG drawings are plane" \
   convert "$work/space.json" --to svg -o "$work/existing.svg"
 [[ "$(cat "$work/existing.svg")" == keep ]] || { echo "FAIL: --to svg touched its output"; failures=$((failures + 1)); }
+model space4.json '{"type": "bezier", "control_points": [[0,0,0,0],[1,1,1,1]]}'
 for format in iges step; do
-  expect_error "--to $format" "--to $format: this format is not supported yet" convert "$work/quad.json" --to "$format" -o "$work/x.$format"
+  expect_error "--to $format of a curve in R^4" "--to $format: the bezier model in '$work/space4.json' lives in R^4" \
+    convert "$work/space4.json" --to "$format" -o "$work/x.$format"
   [[ ! -e "$work/x.$format" ]] || { echo "FAIL: --to $format wrote a file"; failures=$((failures + 1)); }
 done
 expect_error "--to gcode" "--to gcode: not a conversion of curves; casteljau gcode writes it" \

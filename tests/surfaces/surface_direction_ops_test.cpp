@@ -1,5 +1,5 @@
 // Operations in one direction of a surface, each the curve algorithm run on
-// the rows of the homogeneous net: knot insertion and refinement, degree
+// the rows of the homogeneous net: knot insertion, refinement and clamping, degree
 // elevation, splitting (B-spline and Bézier), iso-curves. Properties: the
 // surface is unchanged (points compared on a grid, relative to its scale);
 // bad input refused with a message naming the direction and the value.
@@ -55,6 +55,21 @@ RC_GTEST_PROP(SurfaceDirectionOps, InsertKnotKeepsTheSurface, ()) {
   RC_ASSERT(after == before + static_cast<std::size_t>(times));
   RC_ASSERT(multiplicity_of(refined->knots(direction), value) == have + times);
   RC_ASSERT(largest_distance(s, s.domain_u(), s.domain_v(), *refined, identity) <= test::surface_tolerance(s));
+}
+
+RC_GTEST_PROP(SurfaceDirectionOps, ClampingKeepsTheSurfaceAndItsDomain, ()) {
+  const BSplineSurface s = *test::bspline_surface();
+  const Direction direction = any_direction();
+  const BSplineSurface c = clamped(s, direction);
+  const auto knots = c.knots(direction);
+  const auto p = static_cast<std::size_t>(c.degree(direction));
+  RC_ASSERT(knots[0] == knots[p]);
+  RC_ASSERT(knots[knots.size() - 1] == knots[knots.size() - 1 - p]);
+  RC_ASSERT(c.domain(direction) == s.domain(direction));
+  const Direction other = direction == Direction::u ? Direction::v : Direction::u;
+  RC_ASSERT(std::equal(c.knots(other).begin(), c.knots(other).end(), s.knots(other).begin(), s.knots(other).end()));
+  RC_ASSERT(largest_distance(s, s.domain_u(), s.domain_v(), c, identity) <= test::surface_tolerance(s));
+  RC_ASSERT(clamped(c, direction) == c);  // clamped stays as it is
 }
 
 RC_GTEST_PROP(SurfaceDirectionOps, RefineKnotsKeepsTheSurface, ()) {

@@ -30,4 +30,12 @@ Expected<BSplineSurface> insert_knot(const BSplineSurface& surface, Direction di
 Expected<BSplineSurface> refine_knots(const BSplineSurface& surface, Direction direction,
                                       std::span<const double> new_knots);
 
+/// The same surface with clamped knots in `direction`: both ends of that
+/// domain inserted up to multiplicity degree + 1 and the knots and rows
+/// outside it dropped (the curve's clamped, bspline/transform.hpp, on every
+/// row or column; The NURBS Book A5.4). Same domain, same parameterization;
+/// a surface already clamped there comes back equal. For readers that take
+/// only clamped knots (IGES and STEP in CAD systems).
+BSplineSurface clamped(const BSplineSurface& surface, Direction direction);
+
 }  // namespace casteljau
