@@ -23,6 +23,8 @@ from __future__ import annotations
 import functools
 import math
 
+import matplotlib.cbook
+import matplotlib.lines
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.axes import Axes
@@ -115,9 +117,16 @@ def _axes(ax: Axes | None, dimension: int) -> Axes:
     return ax
 
 
+def _merged(style: dict, kw: dict | None) -> dict:
+    """The caller's line options over the default `style`, matplotlib's short aliases
+    (``ls``, ``lw``, ``c``, ``ms``...) first written in full, so that ``ls='-'`` replaces the
+    default ``linestyle`` rather than meeting it ("Got both 'linestyle' and 'ls'")."""
+    return {**style, **matplotlib.cbook.normalize_kwargs(kw or {}, matplotlib.lines.Line2D)}
+
+
 def _plot(ax: Axes, points: np.ndarray, style: dict, kw: dict) -> list:
     """ax.plot of an (k, 2) or (k, 3) array, default `style` under the caller's `kw`."""
-    options = {**style, **kw}
+    options = _merged(style, kw)
     points = np.asarray(points, dtype=float)
     if points.shape[1] == 3:
         return list(ax.plot(points[:, 0], points[:, 1], points[:, 2], **options))
@@ -261,7 +270,7 @@ def bernstein_basis(n, ks=None, samples=DEFAULT_SAMPLES, *, ax=None, **kw) -> li
     ax = _axes(ax, 2)
     ts = np.linspace(0.0, 1.0, int(samples))
     values = np.asarray(_cj.bernstein_all(int(n), ts))
-    options = {"color": "k", "linewidth": 1.0, **kw}
+    options = _merged({"color": "k", "linewidth": 1.0}, kw)
     artists = []
     for k in indices:
         artists += ax.plot(ts, values[:, k], **options)
@@ -294,7 +303,7 @@ def basis(knots, degree, indices=None, samples=DEFAULT_SAMPLES, *, ax=None, **kw
     if not upper > lower:
         raise ValueError("the knots span an empty range")
     us = np.union1d(np.linspace(lower, upper, int(samples)), values)
-    options = {"linewidth": 1.0, **kw}
+    options = _merged({"linewidth": 1.0}, kw)
     artists = []
     for i in chosen:
         artists += ax.plot(us, np.asarray(_cj.basis_function(values, int(degree), i, us)), **options)
@@ -378,7 +387,7 @@ def tangents(curve, ts=None, *, order=1, scale=None, ax=None, arrows=None, **kw)
     starts, stops = points.copy(), points + scale * vectors
     if ends:  # the end tangent drawn toward the inside of the curve, on the last leg
         starts[-1], stops[-1] = points[-1] - scale[-1] * vectors[-1], points[-1]
-    options = {**_TANGENT_STYLE, **kw}
+    options = _merged(_TANGENT_STYLE, kw)
     artists = []
     for a, b in zip(starts, stops):
         artists += _plot(ax, np.vstack([a, b]), {}, options)
@@ -416,7 +425,7 @@ def subdivision(curve, depth, t=0.5, *, ax=None, polygons=False, polygon_kw=None
         pieces = [curve]
         for _ in range(int(depth)):  # one split per piece and level: a loop over curves, not points
             pieces = [half for piece in pieces for half in _cj.split_at(piece, float(t))]
-        style = {**_POLYGON_STYLE, **(polygon_kw or {})}
+        style = _merged(_POLYGON_STYLE, polygon_kw)
         for piece in pieces:
             artists += _plot(ax, np.asarray(piece.control_points, dtype=float), style, {})
     return artists
@@ -472,7 +481,7 @@ def surface_wireframe(surface, count=10, samples=101, *, ax=None, net=False, net
     vs_iso = np.linspace(v0, v1, int(count_v)) if int(count_v) > 1 else np.array([0.5 * (v0 + v1)])
     along_v = np.asarray(_cj.grid_points_at(surface, us_iso, vs_dense))  # (count_u, samples, d)
     along_u = np.asarray(_cj.grid_points_at(surface, us_dense, vs_iso))  # (samples, count_v, d)
-    options = {"color": "k", "linewidth": 0.7, **kw}
+    options = _merged({"color": "k", "linewidth": 0.7}, kw)
     artists = []
     for a in range(along_v.shape[0]):
         artists += _plot(ax, along_v[a], {}, options)

@@ -5,7 +5,6 @@ their de Casteljau levels, blossoms (the control polygons of pieces) and the
 Bernstein polynomials; scipy.interpolate.BSpline for B-spline curves,
 basis functions (basis_element, design_matrix) and tensor-product surfaces;
 seed 004's worked value B(0.5) = (2.25, 1.5) for (0,0),(1,2),(2,2),(4,1),(4,0).
-The example examples/notebook_004.py is run end to end.
 """
 
 from __future__ import annotations
@@ -21,7 +20,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import matplotlib.image  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
@@ -140,6 +138,20 @@ def test_curve_with_explicit_parameters_and_styling_passes_through():
     (line,) = plot.curve(curve, ts, color="m", linewidth=3)
     np.testing.assert_array_equal(xy(line), as_float([exact_point(SEED_POLYGON, t) for t in ts]))
     assert line.get_color() == "m" and line.get_linewidth() == 3
+
+
+def test_matplotlib_short_aliases_replace_the_default_style():
+    # ls, lw, c, ms are matplotlib's own aliases: they override the helpers' defaults
+    # (written in full) instead of meeting them ("Got both 'linestyle' and 'ls'").
+    require("BezierCurve", "points_at")
+    curve = cj.BezierCurve(SEED_POLYGON)
+    (polygon,) = plot.control_polygon(curve, ls=":", c="g", ms=9)
+    assert polygon.get_linestyle() == ":" and polygon.get_color() == "g" and polygon.get_markersize() == 9
+    lines = plot.bernstein_basis(3, lw=2.5)
+    assert all(line.get_linewidth() == 2.5 for line in lines)
+    (line, *_) = plot.curve(curve, polygon=True, polygon_kw={"lw": 4})
+    assert line.get_linewidth() != 4
+    plt.close("all")
 
 
 def test_axes_may_come_first_and_none_means_current_axes():
@@ -504,33 +516,3 @@ def test_coons_patch_wireframe_reproduces_its_boundaries():
                                rtol=0, atol=1e-14)
     np.testing.assert_allclose(np.column_stack(artists[2].get_data_3d()), as_float([exact_point(v0, t) for t in ts]),
                                rtol=0, atol=1e-14)
-
-
-# --------------------------------------------------------------- example ----
-
-NOTEBOOK_FIGURES = [
-    "01_bernstein_20", "02_bernstein_20_without_ends", "03_bezier_polygon", "04_bezier_cycle_10",
-    "05_bernstein_sum_vs_casteljau_n200", "06_tangents_polygon", "07_tangents_cycle_8", "08_casteljau_polygon_t05",
-    "09_casteljau_cycle_5_t06", "10_subdivision_r9", "11_subdivision_cycle_20_r9", "12_subdivision_polygons_r2",
-]
-
-
-def test_notebook_004_example_writes_every_figure(tmp_path):
-    require("BezierCurve", "points_at", "bernstein_all", "casteljau_construction", "subdivide_recursive",
-            "point_at_bernstein_sum", "derivatives_at", "split_at")
-    package = pathlib.Path(os.path.abspath(cj.__file__)).parent.parent
-    env = {key: value for key, value in os.environ.items() if key not in ("DISPLAY", "WAYLAND_DISPLAY")}
-    env["PYTHONPATH"] = str(package)
-    env["MPLBACKEND"] = "Agg"
-    result = subprocess.run([sys.executable, str(REPOSITORY / "examples" / "notebook_004.py"), str(tmp_path)],
-                            capture_output=True, text=True, env=env, timeout=120)
-    assert result.returncode == 0, result.stderr
-    assert "2.25" in result.stdout and "1.5" in result.stdout
-    written = sorted(path.stem for path in tmp_path.glob("*.png"))
-    assert written == sorted(NOTEBOOK_FIGURES)
-    for name in NOTEBOOK_FIGURES:
-        image = matplotlib.image.imread(tmp_path / f"{name}.png")
-        assert image.shape[0] > 100 and image.shape[1] > 100
-        # Not blank: many pixels differ from the background colour.
-        background = image[0, 0]
-        assert np.mean(np.any(np.abs(image - background) > 0.1, axis=-1)) > 0.01, name

@@ -50,7 +50,7 @@ inline constexpr double kPixelsPerPoint = 100.0 / 72.0;
 struct Stroke {
   Color color = colors::black;
   double width = 1.5 * kPixelsPerPoint;
-  std::vector<double> dash;
+  std::vector<double> dash{};
   friend bool operator==(const Stroke&, const Stroke&) = default;
 };
 
@@ -65,9 +65,9 @@ Stroke dotted(Color color, double width_points = 1.5);
 /// quarter pixel (layout.hpp): one polyline through all pieces, in order.
 /// Control points are read in the plane (2 coordinates), see plane_curve().
 struct CurveItem {
-  std::vector<BezierCurve> pieces;
-  Stroke stroke;
-  std::string label;   ///< legend text; empty: not in the legend
+  std::vector<BezierCurve> pieces{};
+  Stroke stroke{};
+  std::string label{};   ///< legend text; empty: not in the legend
   std::string source = {};  ///< what layout errors name it by (a file, "file.json[2]"); empty: "curve i"
 };
 
@@ -78,16 +78,16 @@ struct CurveItem {
 struct BernsteinGraphItem {
   int degree = 1;  ///< n, in [1, tolerances::kMaxBezierDegree]
   int index = 0;   ///< k, in [0, n]
-  Stroke stroke;
-  std::string label;
+  Stroke stroke{};
+  std::string label{};
 };
 
 /// A polyline through given points (data that is not a Bézier curve:
 /// polygons, sampled errors, the naive evaluator's points).
 struct PolylineItem {
-  std::vector<Vec2> points;
-  Stroke stroke;
-  std::string label;
+  std::vector<Vec2> points{};
+  Stroke stroke{};
+  std::string label{};
 };
 
 /// The form of a marker: a filled circle (matplotlib 'o', the notebook's
@@ -97,19 +97,19 @@ enum class MarkerShape { disc, diamond };
 
 /// Filled markers at points; diameter (the diamond's width) in pixels.
 struct MarkerItem {
-  std::vector<Vec2> points;
+  std::vector<Vec2> points{};
   Color color = colors::red;
   double diameter = 6.0 * kPixelsPerPoint;
-  std::string label;
+  std::string label{};
   MarkerShape shape = MarkerShape::disc;
 };
 
 /// Independent straight segments, optionally with an arrow head at the end.
 struct SegmentItem {
-  std::vector<std::array<Vec2, 2>> segments;
-  Stroke stroke;
+  std::vector<std::array<Vec2, 2>> segments{};
+  Stroke stroke{};
   bool arrows = false;
-  std::string label;
+  std::string label{};
 };
 
 /// Where a text's position is along its width.
@@ -117,8 +117,8 @@ enum class Anchor { start, middle, end };
 
 /// Text at a point of the data, shifted by `offset` pixels (x right, y up).
 struct TextItem {
-  Vec2 position;
-  std::string text;  ///< UTF-8
+  Vec2 position{};
+  std::string text{};  ///< UTF-8
   Color color = colors::black;
   double size = 10.0 * kPixelsPerPoint;  ///< font size in pixels
   Anchor anchor = Anchor::start;
@@ -127,17 +127,17 @@ struct TextItem {
 
 /// A filled polygon (its boundary is closed implicitly).
 struct RegionItem {
-  std::vector<Vec2> boundary;
+  std::vector<Vec2> boundary{};
   Color fill{31, 119, 180, 0.25};
-  std::string label;
+  std::string label{};
 };
 
 /// One axis: label, range (automatic from the content when empty), scale.
 struct Axis {
-  std::string label;
+  std::string label{};
   /// Fixed [lower, upper]; otherwise the data's range plus 5 % on each side
   /// (matplotlib's default margins).
-  std::optional<std::array<double, 2>> range;
+  std::optional<std::array<double, 2>> range{};
   /// Base-10 logarithmic scale; values <= 0 are left out (break the lines).
   bool logarithmic = false;
 };
@@ -150,20 +150,20 @@ enum class LegendPlace { best, upper_right, upper_left, lower_left, lower_right,
 /// inside a layer in insertion order. The legend lists labelled items in the
 /// same order.
 struct Panel {
-  std::string title;
-  Axis x, y;
+  std::string title{};
+  Axis x{}, y{};
   /// One model unit is as long across as up (matplotlib's set_aspect('equal')),
   /// obtained by widening the range of one axis.
   bool equal_aspect = false;
   bool grid = true;
   LegendPlace legend = LegendPlace::best;
-  std::vector<RegionItem> regions;
-  std::vector<SegmentItem> segments;
-  std::vector<PolylineItem> polylines;
-  std::vector<CurveItem> curves;
-  std::vector<BernsteinGraphItem> bernstein_graphs;
-  std::vector<MarkerItem> markers;
-  std::vector<TextItem> texts;
+  std::vector<RegionItem> regions{};
+  std::vector<SegmentItem> segments{};
+  std::vector<PolylineItem> polylines{};
+  std::vector<CurveItem> curves{};
+  std::vector<BernsteinGraphItem> bernstein_graphs{};
+  std::vector<MarkerItem> markers{};
+  std::vector<TextItem> texts{};
 };
 
 /// A whole figure: size in pixels (PNG pixels, SVG user units), a title, and
@@ -171,9 +171,9 @@ struct Panel {
 struct Figure {
   int width = 800;
   int height = 600;
-  std::string title;
+  std::string title{};
   int columns = 1;
-  std::vector<Panel> panels;
+  std::vector<Panel> panels{};
 };
 
 /// The first two coordinates of each point (d >= 2), or (x, 0) for d = 1.

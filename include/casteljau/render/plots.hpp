@@ -22,7 +22,7 @@ struct BezierPlotOptions {
   bool end_tangents = false;     ///< the segments P_0P_1 and P_{n-1}P_n in blue (plot_bezier2)
   /// The de Casteljau construction at this t: every intermediate polygon
   /// dashed black with black dots, the point C(t) in red (demo_casteljau).
-  std::optional<double> construction;
+  std::optional<double> construction{};
   bool curvature_comb = false;  ///< teeth along the normal, length proportional to the curvature
 };
 
@@ -72,9 +72,9 @@ Expected<Figure> bernstein_basis_figure(int n, BasisEnds ends = BasisEnds::inclu
 /// read as one Bézier curve's control polygon), or a point set drawn as data:
 /// its points as diamonds (markers) and/or the polyline through them.
 struct PlotSource {
-  std::string name;           ///< the file, for the legend and error messages
-  std::vector<Model> models;  ///< curves; when empty, `points` is a point set
-  PointArray points;
+  std::string name{};           ///< the file, for the legend and error messages
+  std::vector<Model> models{};  ///< curves; when empty, `points` is a point set
+  PointArray points{};
   bool markers = true;    ///< a point set: its points as filled diamonds (MarkerShape::diamond)
   bool polyline = false;  ///< a point set: the polyline through its points, in order
 };
@@ -84,7 +84,7 @@ struct PlotSource {
 /// B-spline (bspline model) its B-spline basis N_{i,p} on its knots
 /// (bspline_basis_panel; weights are not applied).
 struct PlotOptions {
-  BezierPlotOptions bezier;
+  BezierPlotOptions bezier{};
   bool basis = false;
 };
 

@@ -40,7 +40,7 @@ struct SurfacePlotOptions {
   bool control_net = false;     ///< the rows and columns of the control net, dashed gray (Coons: the
                                 ///< boundaries' control polygons)
   bool control_points = false;  ///< the control points as red dots
-  ViewAngles view;
+  ViewAngles view{};
 };
 
 /// Adds the iso-curves of a surface model (asserts is_surface) to a panel:
