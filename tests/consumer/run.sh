@@ -67,3 +67,28 @@ if [ -e "$build_dir/python/casteljau" ]; then
   site=$(echo "$work"/python/lib/python3*/site-packages)
   PYTHONPATH=$site /usr/bin/python3 -c "import casteljau; print('python component:', casteljau.__version__)"
 fi
+
+# The course companion's C++ programs (examples/course/cpp): their own CMake
+# project against the same prefix, warnings as errors on top of its -Wall
+# -Wextra; each program runs from outside the source folder into a fresh
+# output folder (the data folder is head_and_car's second argument, the
+# others ignore it), must succeed, print its known result and write its files.
+course=$work/course
+cmake -S "$source_dir/examples/course/cpp" -B "$course/build" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" \
+  -DCMAKE_CXX_FLAGS=-Werror >"$course.log" 2>&1 || { cat "$course.log"; fail "course programs: configure failed"; }
+cmake --build "$course/build" >"$course.log" 2>&1 || { grep -E 'warning|error|FAILED' "$course.log" | head -20; fail "course programs: build failed"; }
+check_course() {  # program, a line its output must hold, the files it must write
+  local program=$1 expected=$2 file
+  shift 2
+  (cd "$work" && "$course/build/$program" "$course/out" "$source_dir/examples" >"$course/$program.out" 2>&1) ||
+    { cat "$course/$program.out"; fail "course program $program failed"; }
+  grep -qF "$expected" "$course/$program.out" || { cat "$course/$program.out"; fail "course program $program does not print '$expected'"; }
+  for file in "$@"; do
+    [ -s "$course/out/$file" ] || fail "course program $program did not write $file"
+  done
+  echo "course: ran $program, wrote $*"
+}
+check_course de_casteljau "B(0.5) = (2.25, 1.5)" de_casteljau.svg
+check_course head_and_car "head: 19 points, 18 pieces" head_and_car.svg
+check_course bspline_basis "u = 4    N_0..N_6 = 0.0000 0.0000 0.0000 0.0000 0.0000 0.0000 1.0000" bspline_basis.svg
+check_course coons_patch "P(0.5, 0.5) = (0.5, 0.5, 0.3375)" coons_patch.obj coons_patch.svg
