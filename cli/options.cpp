@@ -188,9 +188,10 @@ int write_figure_output(const std::string& path, const render::Figure& figure, r
 }
 
 int write_summary(const std::string& output, std::string_view line) {
-  if (!is_standard_output(output)) return write_standard_output(line);
+  const std::string text = line.ends_with('\n') ? std::string(line) : std::string(line) + '\n';
+  if (!is_standard_output(output)) return write_standard_output(text);
   erase_progress_line();  // the summary takes the line on standard error
-  std::fwrite(line.data(), 1, line.size(), stderr);
+  std::fwrite(text.data(), 1, text.size(), stderr);
   return 0;
 }
 

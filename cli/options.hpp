@@ -139,6 +139,7 @@ int write_figure_output(const std::string& path, const render::Figure& figure, r
 /// A command's summary line ("fit: 12 control points, ..."): on standard
 /// output, unless the command's output goes there (no -o, or -o -), then on
 /// standard error, so that the output stays exactly the file it would be.
+/// The line ends with a newline (added when `line` has none).
 int write_summary(const std::string& output, std::string_view line);
 
 }  // namespace casteljau::cli

@@ -12,6 +12,9 @@ export SOURCE_DATE_EPOCH=1796374800  # 2026-12-04T09:00:00Z
   { echo "FAIL: convert --to iges"; failures=$((failures + 1)); }
 [[ "$(cat "$work/summary")" == "convert: 1 curve and 0 surfaces to IGES 5.3 (entities 126 and 128), exact (every knot, control point and weight as it is), in millimetres" && ! -s "$work/stderr" ]] ||
   { echo "FAIL: the IGES summary: $(cat "$work/summary") $(cat "$work/stderr")"; failures=$((failures + 1)); }
+[[ "$(tail -c1 "$work/summary" | wc -l)" == 1 ]] || { echo "FAIL: the summary line ends without a newline"; failures=$((failures + 1)); }
+"$casteljau" convert "$examples/semicircle.json" --to svg -o "$work/semi.svg" >"$work/svg-summary"
+[[ "$(tail -c1 "$work/svg-summary" | wc -l)" == 1 ]] || { echo "FAIL: the svg summary line ends without a newline"; failures=$((failures + 1)); }
 awk 'length($0) != 80 { bad = 1 } END { exit bad }' "$work/semi.igs" ||
   { echo "FAIL: an IGES record is not 80 columns"; failures=$((failures + 1)); }
 grep -q '8Hsemi.igs' "$work/semi.igs" || { echo "FAIL: the IGES file is named after -o"; failures=$((failures + 1)); }
