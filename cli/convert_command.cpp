@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "casteljau/bspline/bezier_pieces.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/cad_exchange.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
@@ -119,7 +120,7 @@ int convert_to_svg(const ConvertOptions& options) {
   const double size = drawing_size(curves);
   if (!from_svg)
     for (SvgCurve& curve : curves) curve.stroke_width = size > 0.0 ? size / 500.0 : 1.0;
-  const double distance = tolerance.value_or(1e-6 * (size > 0.0 ? size : 1.0));
+  const double distance = tolerance.value_or(tolerances::kDefaultSvgCubicRelativeTolerance * (size > 0.0 ? size : 1.0));
   auto written = write_svg_drawing(curves, Tolerance{distance});
   if (!written) return fail(with_context(written.error(), "--to svg"));
   if (int status = write_output(options.output, written->text); status != 0) return status;

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/cad_exchange.hpp"
 #include "casteljau/version.hpp"
 #include "exchange_geometry.hpp"
@@ -162,7 +163,7 @@ Expected<std::string> write_iges(std::span<const Model> models, const ExchangeHe
       "1",                             // 16 line weight gradations
       exchange_real(size * 1e-3),      // 17 width of the heaviest line
       fmt::format("15H{}", date),      // 18 when the file was written
-      exchange_real(size * 1e-12),     // 19 smallest distance the model means (the exactness the numbers keep)
+      exchange_real(size * tolerances::kExchangeResolutionRelative),  // 19 smallest distance the model means (the exactness the numbers keep)
       exchange_real(geometry->largest_coordinate > 0.0 ? geometry->largest_coordinate : 1.0),  // 20 largest coordinate
       hollerith(header.author),        // 21 author
       hollerith(header.organization),  // 22 organization

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/cad_exchange.hpp"
 #include "casteljau/version.hpp"
 #include "exchange_geometry.hpp"
@@ -184,7 +185,7 @@ Expected<std::string> write_step(std::span<const Model> models, const ExchangeHe
   const double size = geometry->size > 0.0 ? geometry->size : 1.0;
   const int uncertainty = data.add(fmt::format("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE({}),#{},"
                                                "'distance_accuracy_value','the numbers are exact to the last digit')",
-                                               exchange_real(size * 1e-12), length));
+                                               exchange_real(size * tolerances::kExchangeResolutionRelative), length));
   const int context = data.add(fmt::format("(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#{}))"
                                            "GLOBAL_UNIT_ASSIGNED_CONTEXT((#{},#{},#{}))REPRESENTATION_CONTEXT('','3D'))",
                                            uncertainty, length, angle, solid_angle));

@@ -347,6 +347,23 @@ inline constexpr int kMaxSvgDepth = 256;
 /// a second.
 inline constexpr std::size_t kMaxSvgElements = 1'000'000;
 
+// --- Files for other programs (io/svg_writer, io/cad_exchange) ---------------
+
+/// Default distance of the cubics `convert --to svg` puts in place of pieces
+/// SVG cannot hold (rational, degree > 3), relative to the drawing's size (the
+/// diagonal of its control points' box): far below what a screen or a plotter
+/// resolves (1e-6 of a metre-wide drawing is a micrometre), while a circle
+/// still needs only tens of cubics.
+inline constexpr double kDefaultSvgCubicRelativeTolerance = 1e-6;
+
+/// The resolution an IGES file states (global parameter 19, "minimum
+/// user-intended resolution") and the uncertainty of a STEP file's context,
+/// relative to the model's size: the numbers are written exactly (shortest
+/// round-trip form), so the file claims the accuracy they keep; above double
+/// rounding (1e-16 of the size) and below every CAD tolerance (OpenCASCADE's
+/// confusion distance is 1e-7).
+inline constexpr double kExchangeResolutionRelative = 1e-12;
+
 /// Most values in one input file: JSON values (numbers, arrays, objects,
 /// strings...) of a model JSON text, numbers of a CSV file. Exactly what
 /// kMaxControlPoints points in 3D with weights need in JSON (10^7 point
