@@ -37,7 +37,7 @@ int plane_axis(const std::vector<double>& points) {
   return -1;
 }
 
-ExchangeCurve exchange_curve(const BSplineCurve& curve, std::size_t index) {
+ExchangeCurve exchange_curve(const BSplineCurve& curve) {
   ExchangeCurve out;
   out.degree = curve.degree();
   out.knots.assign(curve.knots().begin(), curve.knots().end());
@@ -49,11 +49,10 @@ ExchangeCurve exchange_curve(const BSplineCurve& curve, std::size_t index) {
   out.domain = curve.domain();
   out.closed = point_at(curve, out.domain.lower) == point_at(curve, out.domain.upper);
   out.plane_axis = curve.dimension() == 2 ? 2 : plane_axis(out.points);
-  out.model = index;
   return out;
 }
 
-ExchangeSurface exchange_surface(const BSplineSurface& surface, std::size_t index) {
+ExchangeSurface exchange_surface(const BSplineSurface& surface) {
   ExchangeSurface out;
   out.degree_u = surface.degree_u();
   out.degree_v = surface.degree_v();
@@ -80,7 +79,6 @@ ExchangeSurface exchange_surface(const BSplineSurface& surface, std::size_t inde
   for (std::size_t j = 0; j < out.columns; ++j) out.closed_u = out.closed_u && same(j, (out.rows - 1) * out.columns + j);
   for (std::size_t i = 0; i < out.rows; ++i)
     out.closed_v = out.closed_v && same(i * out.columns, i * out.columns + out.columns - 1);
-  out.model = index;
   return out;
 }
 
@@ -124,12 +122,14 @@ Expected<ExchangeGeometry> exchange_geometry(std::span<const Model> models, cons
     // Clamped knots: CAD readers expect them (OpenCASCADE evaluates an
     // unclamped surface as NaN), and clamping keeps the curve.
     if (const auto* curve = std::get_if<BSplineCurve>(&*spline)) {
-      geometry.curves.push_back(exchange_curve(clamped(*curve), i));
-      include_in_box(geometry, geometry.curves.back().points, lower, upper, first);
+      const ExchangeCurve& item = std::get<ExchangeCurve>(geometry.items.emplace_back(exchange_curve(clamped(*curve))));
+      include_in_box(geometry, item.points, lower, upper, first);
     } else {
       const BSplineSurface& surface = std::get<BSplineSurface>(*spline);
-      geometry.surfaces.push_back(exchange_surface(clamped(clamped(surface, Direction::u), Direction::v), i));
-      include_in_box(geometry, geometry.surfaces.back().points, lower, upper, first);
+      const ExchangeSurface& item = std::get<ExchangeSurface>(
+          geometry.items.emplace_back(exchange_surface(clamped(clamped(surface, Direction::u), Direction::v))));
+      include_in_box(geometry, item.points, lower, upper, first);
+      geometry.has_surfaces = true;
     }
   }
   geometry.size = std::hypot(upper[0] - lower[0], upper[1] - lower[1], upper[2] - lower[2]);

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "casteljau/core/expected.hpp"
@@ -27,7 +28,6 @@ struct ExchangeCurve {
   Interval domain{0.0, 1.0};
   bool closed = false;     ///< the end point equals the start point, bit for bit
   int plane_axis = -1;     ///< 0, 1 or 2 when every control point has that coordinate equal, else -1
-  std::size_t model = 0;   ///< the index of the model in the writer's input
 };
 
 /// A B-spline or NURBS surface in R^3, control point (i, j) at i * columns + j
@@ -41,18 +41,17 @@ struct ExchangeSurface {
   bool rational = false;
   Interval domain_u{0.0, 1.0}, domain_v{0.0, 1.0};
   bool closed_u = false, closed_v = false;  ///< first and last rows (columns) equal, weights included
-  std::size_t model = 0;
 };
 
 /// The models to write, in their B-spline form (to_bspline: exact) with
-/// clamped knots (clamped: the same curve, its points within rounding),
-/// curves and surfaces apart, each knowing its index. Errors name the model
+/// clamped knots (clamped: the same curve, its points within rounding), in
+/// the models' order (item i is model i). Errors name the model
 /// ("<format>: model 2 lives in R^4, <format> holds plane and space
 /// geometry") and pass on to_bspline's (pieces that do not meet, a Coons
 /// patch with a rational boundary); an empty list is refused too.
 struct ExchangeGeometry {
-  std::vector<ExchangeCurve> curves;
-  std::vector<ExchangeSurface> surfaces;
+  std::vector<std::variant<ExchangeCurve, ExchangeSurface>> items;
+  bool has_surfaces = false;
   double largest_coordinate = 0.0;  ///< max |x|, |y|, |z| over every control point
   double size = 0.0;                ///< the diagonal of the box of every control point
 };

@@ -8,6 +8,7 @@
 
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "casteljau/core/tolerance.hpp"
@@ -115,7 +116,6 @@ std::vector<std::string> surface_parameters(const detail::ExchangeSurface& surfa
 
 struct Entity {
   int type;
-  std::size_t model;
   std::vector<std::string> parameter_lines;
 };
 
@@ -129,14 +129,13 @@ Expected<std::string> write_iges(std::span<const Model> models, const ExchangeHe
   auto geometry = detail::exchange_geometry(models, "IGES");
   if (!geometry) return geometry.error();
 
-  // Entities in model order; Parameter Data lines hold 64 columns.
+  // Entities in model order (entity e is model e); Parameter Data lines hold 64 columns.
   std::vector<Entity> entities;
-  std::size_t next_curve = 0, next_surface = 0;
-  for (std::size_t m = 0; m < models.size(); ++m) {
-    if (next_curve < geometry->curves.size() && geometry->curves[next_curve].model == m)
-      entities.push_back({126, m, parameter_lines(curve_parameters(geometry->curves[next_curve++]), 64)});
+  for (const auto& item : geometry->items) {
+    if (const auto* curve = std::get_if<detail::ExchangeCurve>(&item))
+      entities.push_back({126, parameter_lines(curve_parameters(*curve), 64)});
     else
-      entities.push_back({128, m, parameter_lines(surface_parameters(geometry->surfaces[next_surface++]), 64)});
+      entities.push_back({128, parameter_lines(surface_parameters(std::get<detail::ExchangeSurface>(item)), 64)});
   }
 
   IgesFile file;
@@ -181,7 +180,7 @@ Expected<std::string> write_iges(std::span<const Model> models, const ExchangeHe
     file.record('D', fmt::format("{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}", entity.type, parameter_line, 0, 0, 0,
                                  0, 0, 0, "00000000"));
     file.record('D', fmt::format("{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}{:>8}", entity.type, 0, 0, lines, 0, "", "",
-                                 entity.type == 126 ? "CURVE" : "SURFACE", entity.model % 100000000));
+                                 entity.type == 126 ? "CURVE" : "SURFACE", e % 100000000));
     parameter_line += lines;
   }
   for (std::size_t e = 0; e < entities.size(); ++e) {

@@ -9,6 +9,7 @@
 
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "casteljau/core/tolerance.hpp"
@@ -88,7 +89,7 @@ std::string integer_list(const std::vector<int>& values) {
   return list(values, [](int k) { return std::to_string(k); });
 }
 
-/// CARTESIAN_POINTs for points [first, first + count) of x y z triples.
+/// A CARTESIAN_POINT per x y z triple of `xyz`, their instance numbers in order.
 std::vector<int> add_points(StepData& data, const std::vector<double>& xyz) {
   std::vector<int> refs;
   refs.reserve(xyz.size() / 3);
@@ -101,8 +102,7 @@ std::vector<int> add_points(StepData& data, const std::vector<double>& xyz) {
 const char* logical(bool value) { return value ? ".T." : ".F."; }
 
 /// A curve: B_SPLINE_CURVE_WITH_KNOTS, or the rational complex instance.
-int add_curve(StepData& data, const detail::ExchangeCurve& curve) {
-  const std::string name = step_string(fmt::format("model {}", curve.model));
+int add_curve(StepData& data, const detail::ExchangeCurve& curve, const std::string& name) {
   const std::string points = list(add_points(data, curve.points), reference);
   const detail::DistinctKnots knots = detail::distinct_knots(curve.knots);
   const std::string with_knots =
@@ -119,8 +119,7 @@ int add_curve(StepData& data, const detail::ExchangeCurve& curve) {
 
 /// A surface: B_SPLINE_SURFACE_WITH_KNOTS, or the rational complex instance;
 /// control points and weights as lists of rows (the u index outside).
-int add_surface(StepData& data, const detail::ExchangeSurface& surface) {
-  const std::string name = step_string(fmt::format("model {}", surface.model));
+int add_surface(StepData& data, const detail::ExchangeSurface& surface, const std::string& name) {
   const std::vector<int> refs = add_points(data, surface.points);
   std::string net = "(", weights = "(";
   for (std::size_t i = 0; i < surface.rows; ++i) {
@@ -190,15 +189,15 @@ Expected<std::string> write_step(std::span<const Model> models, const ExchangeHe
                                            "GLOBAL_UNIT_ASSIGNED_CONTEXT((#{},#{},#{}))REPRESENTATION_CONTEXT('','3D'))",
                                            uncertainty, length, angle, solid_angle));
 
-  std::vector<int> items;
-  std::size_t next_curve = 0, next_surface = 0;
-  for (std::size_t m = 0; m < models.size(); ++m) {
-    if (next_curve < geometry->curves.size() && geometry->curves[next_curve].model == m)
-      items.push_back(add_curve(data, geometry->curves[next_curve++]));
+  std::vector<int> items;  // item m is model m, named so
+  for (std::size_t m = 0; m < geometry->items.size(); ++m) {
+    const std::string item_name = step_string(fmt::format("model {}", m));
+    if (const auto* curve = std::get_if<detail::ExchangeCurve>(&geometry->items[m]))
+      items.push_back(add_curve(data, *curve, item_name));
     else
-      items.push_back(add_surface(data, geometry->surfaces[next_surface++]));
+      items.push_back(add_surface(data, std::get<detail::ExchangeSurface>(geometry->items[m]), item_name));
   }
-  const bool wireframe = geometry->surfaces.empty();
+  const bool wireframe = !geometry->has_surfaces;
   const int set = data.add(fmt::format("{}('',{})", wireframe ? "GEOMETRIC_CURVE_SET" : "GEOMETRIC_SET",
                                        list(items, reference)));
   const int representation =
@@ -210,7 +209,7 @@ Expected<std::string> write_step(std::span<const Model> models, const ExchangeHe
 
   const std::string system = step_string(fmt::format("casteljau {}", CASTELJAU_VERSION_STRING));
   std::string out = "ISO-10303-21;\nHEADER;\n";
-  out += fmt::format("FILE_DESCRIPTION(('B-spline curves and surfaces written by casteljau'),'2;1');\n");
+  out += "FILE_DESCRIPTION(('B-spline curves and surfaces written by casteljau'),'2;1');\n";
   out += fmt::format("FILE_NAME({},'{}',({}),({}),{},{},'');\n", name, header.timestamp, step_string(header.author),
                      step_string(header.organization), system, system);
   out += "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n";

@@ -36,9 +36,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -48,6 +45,7 @@
 #include "casteljau/bspline/transform.hpp"
 #include "casteljau/curves/curve_view.hpp"
 #include "casteljau/io/cad_exchange.hpp"
+#include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/nurbs/conics.hpp"
@@ -261,7 +259,10 @@ OcctReading written_and_read(const std::vector<Model>& models, Format format, co
   const auto path = std::filesystem::temp_directory_path() /
                     (std::string("casteljau_exchange_") + std::to_string(::getpid()) +
                      (format == Format::iges ? ".igs" : ".stp"));
-  std::ofstream(path, std::ios::binary) << *text;
+  if (auto written = write_file_atomically(path, *text); !written) {
+    ADD_FAILURE() << written.error().message;
+    return {};
+  }
   OcctReading reading = read_with_occt(path, format);
   std::filesystem::remove(path);
   return reading;
