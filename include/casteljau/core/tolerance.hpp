@@ -54,6 +54,24 @@ inline constexpr double kDefaultArcLengthRelativeTolerance = 1e-12;
 /// that pass farther apart than a billionth of their size.
 inline constexpr double kDefaultIntersectionRelativeTolerance = 1e-9;
 
+// --- Arc fitting (ops/arc_spline) --------------------------------------------
+
+/// Bisection steps on the end of the longest certified biarc from a point:
+/// 12 put it within 2^-12 of the stretch's length of the longest one, so the
+/// greedy chain is within a fraction of a biarc of the greedy optimum; more
+/// halvings follow only when no biarc is certified yet.
+inline constexpr int kArcFitReachSteps = 12;
+
+/// Consecutive elements lie on one circle when their curvatures agree within
+/// this fraction of the larger (or of 1 / the curve's size) and their tangents
+/// at the joint within this angle: rounding leaves the two halves of a biarc
+/// fitted to a true circle about 1e-15 apart; a join is certified again anyway.
+inline constexpr double kArcSameCircle = 1e-9;
+
+/// Largest sweep of one joined arc: short of a whole circle (which has no
+/// bulge, start and end being one point), so that a circle becomes two arcs.
+inline constexpr double kArcLargestSweep = 1.9 * 3.14159265358979323846;
+
 // --- Intersections (ops/intersection) ----------------------------------------
 // Parameters are on [0, 1] per piece, or fractions of a curve's domain width.
 
