@@ -14,7 +14,8 @@ PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark
   libfreetype-dev fonts-dejavu-core fonts-cantarell \
   libcairo2-dev poppler-utils emscripten python3-dev python3-numpy python3-scipy \
   python3-matplotlib python3-pytest python3-hypothesis python3-meshio \
-  pybind11-dev python3-pybind11 chromium python3-ezdxf libocct-data-exchange-dev
+  pybind11-dev python3-pybind11 chromium python3-ezdxf libocct-data-exchange-dev \
+  ccache python3-pytest-xdist
 # Checkers we did not write: chromium reads SVG in tests/svg/ (driven by npm's
 # playwright-core, installed into tests/svg/node_modules by deps); python3-ezdxf
 # reads and writes DXF in tests/python/test_dxf_ezdxf.py; OpenCASCADE
@@ -24,20 +25,43 @@ BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-model
   libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev \
   cargo librust-kurbo-dev librust-lyon-geom-dev python3-svgelements
 
-CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON)
+# Every tree is configured with the flags CI uses (-Werror here, -g1 in the
+# presets), so that a developer's `make test` fills ccache with exactly the
+# objects CI's fresh clone asks for (docs/development.md).
+CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON) -DCASTELJAU_WERROR=ON
 # The bench build never gets -Werror: at -O3 -march=native GCC 12 warns inside
 # Eigen's AVX-512 packet code and libstdc++'s string concatenation
 # (-Wmaybe-uninitialized, -Wstringop-overflow: flow-analysis false positives the
 # -O2 builds of `make test` do not meet), and benchmarks are not what CI gates.
-BENCH_CMAKE_FLAGS := $(CMAKE_FLAGS)
-# CI also keeps only line tables in the -O2 build (-g1: backtraces still name
-# file and line): full debug info is a third of its compile time, and CI
-# has 2 cores and a time budget.
-ifeq ($(CI),true)
-  CMAKE_FLAGS += -DCASTELJAU_WERROR=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG"
-endif
+BENCH_CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON)
 
-.PHONY: all deps bench-deps build python asan wasm test demo bench bench-publish clean
+# $(call timed,PHASE,COMMAND): runs COMMAND, prints its wall time and adds it
+# to out/phases.tsv, the table `make test` and `make check` end with.
+define timed
+	@started=$$(date +%s%N); ( $(2) ); status=$$?; \
+	tenths=$$(( ($$(date +%s%N) - started) / 100000000 )); \
+	mkdir -p out; printf '%s\t%d.%d\n' "$(1)" $$((tenths / 10)) $$((tenths % 10)) >> out/phases.tsv; \
+	echo "== $(1): $$((tenths / 10)).$$((tenths % 10)) s"; exit $$status
+endef
+
+# ccache's counters at the start of a run, and the hits since then.
+define ccache_start
+	@rm -f out/phases.tsv; mkdir -p out
+	@if command -v ccache >/dev/null; then ccache --print-stats > out/ccache-start.tsv; fi
+endef
+define report
+	@echo "== phases (wall seconds, this machine: $$(nproc) cores) =="
+	@awk -F'\t' '{ printf "  %-26s %7.1f\n", $$1, $$2; s += $$2 } END { printf "  %-26s %7.1f\n", "total", s }' out/phases.tsv
+	@if command -v ccache >/dev/null && [ -f out/ccache-start.tsv ]; then \
+	  ccache --print-stats | awk -F'\t' 'NR == FNR { start[$$1] = $$2; next } \
+	    { now[$$1] = $$2 - start[$$1] } \
+	    END { hits = now["direct_cache_hit"] + now["preprocessed_cache_hit"]; total = hits + now["cache_miss"]; \
+	          if (total > 0) printf "== ccache: %d of %d compilations found in the cache (%.0f %%)\n", hits, total, 100 * hits / total; \
+	          else print "== ccache: nothing compiled" }' out/ccache-start.tsv -; \
+	fi
+endef
+
+.PHONY: all deps bench-deps build python asan wasm test check demo bench bench-publish clean
 
 all: build
 
@@ -63,8 +87,8 @@ bench-deps: deps
 	$(call install_missing,$(BENCH_PACKAGES))
 
 build: deps
-	cmake --preset default $(CMAKE_FLAGS) >/dev/null
-	cmake --build --preset default -j $(JOBS)
+	$(call timed,configure build/,cmake --preset default $(CMAKE_FLAGS) >/dev/null)
+	$(call timed,build build/,cmake --build --preset default -j $(JOBS))
 
 # The Python module (pybind11, /usr/bin/python3) in build/python/casteljau:
 # PYTHONPATH=build/python /usr/bin/python3 -c "import casteljau". Install it
@@ -75,25 +99,44 @@ python: deps
 	@echo "make python: import it with PYTHONPATH=$(CURDIR)/build/python $(PYTHON)"
 
 asan: deps
-	cmake --preset asan $(CMAKE_FLAGS) >/dev/null
-	cmake --build --preset asan -j $(JOBS)
+	$(call timed,configure build-asan/,cmake --preset asan $(CMAKE_FLAGS) >/dev/null)
+	$(call timed,build build-asan/,cmake --build --preset asan -j $(JOBS))
 
 # The core library with Debian's em++ (keeps it inside the C++ subset em++ accepts).
 wasm: deps
-	cmake --preset wasm $(CMAKE_FLAGS) >/dev/null
-	cmake --build --preset wasm -j $(JOBS)
+	$(call timed,configure build-wasm/,cmake --preset wasm $(CMAKE_FLAGS) >/dev/null)
+	$(call timed,build build-wasm/,cmake --build --preset wasm -j $(JOBS))
 
-test: build asan wasm
+# The suites of the default tree: C++ (ctest; the Python suite, labelled
+# python, runs through pytest itself so that its summary shows) and pytest.
+# $(1): more labels for ctest to exclude (|slow).
+define default_suites
 	@echo "== C++ tests (build/) =="
-	cd build && ctest --output-on-failure -j $(JOBS) -LE python
+	$(call timed,C++ tests build/,cd build && ctest --output-on-failure -j $(JOBS) -LE 'python$(1)')
 	@echo "== Python tests (pytest with $(PYTHON): the module in build/python, the CLI build/casteljau, against scipy) =="
-	CASTELJAU_CLI=$(CURDIR)/build/casteljau CASTELJAU_PYTHONPATH=$(CURDIR)/build/python \
-	  $(PYTHON) -m pytest -q -p no:cacheprovider tests/python
+	$(call timed,pytest,CASTELJAU_CLI=$(CURDIR)/build/casteljau CASTELJAU_PYTHONPATH=$(CURDIR)/build/python $(PYTHON) -m pytest -q -p no:cacheprovider -n $(JOBS) --durations=10 tests/python)
+endef
+
+# Every test: what CI runs. `make check` is the inner loop.
+test: test-start build asan wasm
+	$(call default_suites)
 	@echo "== C++ tests under AddressSanitizer + UBSan (build-asan/) =="
-	cd build-asan && ctest --output-on-failure -j $(JOBS) -LE python
+	$(call timed,C++ tests build-asan/,cd build-asan && ctest --output-on-failure -j $(JOBS) -LE python)
 	@echo "== core library built with em++, run under node (build-wasm/) =="
-	cd build-wasm && ctest --output-on-failure
+	$(call timed,em++ tests build-wasm/,cd build-wasm && ctest --output-on-failure)
+	$(report)
 	@echo "make test: all test suites passed (C++, pytest, sanitizers, em++ core)"
+
+# The inner loop: the default tree and its C++ and Python suites, without the
+# C++ tests labelled slow (over 10 s each); `make test` runs them all.
+check: test-start build
+	$(call default_suites,|slow)
+	$(report)
+	@echo "make check: the default tree's suites passed (make test runs every suite)"
+
+.PHONY: test-start
+test-start:
+	$(ccache_start)
 
 demo: build
 	rm -rf out/gallery.tmp && ./build/casteljau gallery out/gallery.tmp

@@ -7,6 +7,7 @@
 
 #include "casteljau/render/layout.hpp"
 #include "casteljau/render/plots.hpp"
+#include "casteljau/render/tolerance.hpp"
 #include "casteljau/render/write.hpp"
 #include "commands.hpp"
 #include "progress.hpp"

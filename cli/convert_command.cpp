@@ -27,6 +27,7 @@
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/io/svg_drawing.hpp"
 #include "casteljau/io/svg_writer.hpp"
+#include "casteljau/io/tolerance.hpp"
 #include "commands.hpp"
 
 namespace casteljau::cli {

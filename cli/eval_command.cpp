@@ -11,11 +11,13 @@
 #include <string_view>
 #include <vector>
 
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
+#include "casteljau/io/tolerance.hpp"
 #include "casteljau/ops/arc_length.hpp"
 #include "commands.hpp"
 

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/interpolation/catmull_rom.hpp"
 #include "casteljau/interpolation/c1_bezier.hpp"
 #include "casteljau/interpolation/hermite.hpp"
@@ -21,6 +22,7 @@
 #include "casteljau/interpolation/natural_spline.hpp"
 #include "casteljau/interpolation/parameterization.hpp"
 #include "casteljau/interpolation/spline_interpolation.hpp"
+#include "casteljau/interpolation/tolerance.hpp"
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"

@@ -17,7 +17,7 @@ from .scipy_like import (BSpline as BSpline, CubicSpline as CubicSpline, make_in
 __version__: str
 
 class _Tolerances:
-    """The limits of include/casteljau/core/tolerance.hpp."""
+    """The limits of include/casteljau/core/tolerance.hpp and ops/tolerance.hpp."""
     MAX_BEZIER_DEGREE: int
     MAX_BSPLINE_DEGREE: int
     MAX_CONTROL_POINTS: int

@@ -13,7 +13,6 @@
 #include "bindings.hpp"
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/bspline/evaluate.hpp"
-#include "casteljau/core/tolerance.hpp"
 
 namespace casteljau::python {
 

@@ -1,9 +1,10 @@
-// The core layer in Python: the version and the limits of core/tolerance.hpp
+// The core layer in Python: the version and the limits of the tolerance.hpp headers
 // that callers meet (as casteljau.tolerances.<name>).
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "casteljau/version.hpp"
 
 #include <fmt/format.h>
@@ -22,7 +23,7 @@ Tolerance tolerance_from(double distance, const std::string& what) {
 void bind_core(py::module_& module) {
   module.attr("__version__") = CASTELJAU_VERSION_STRING;
   py::module_ limits = module.def_submodule(
-      "tolerances", "The limits and tolerances of include/casteljau/core/tolerance.hpp (read-only values).");
+      "tolerances", "The limits and tolerances of include/casteljau/core/tolerance.hpp and ops/tolerance.hpp (read-only values).");
   limits.attr("MAX_BEZIER_DEGREE") = tolerances::kMaxBezierDegree;
   limits.attr("MAX_BSPLINE_DEGREE") = tolerances::kMaxBSplineDegree;
   limits.attr("MAX_CONTROL_POINTS") = tolerances::kMaxControlPoints;

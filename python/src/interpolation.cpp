@@ -24,6 +24,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "casteljau/bspline/hodograph.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/interpolation/c1_bezier.hpp"
 #include "casteljau/interpolation/catmull_rom.hpp"
 #include "casteljau/interpolation/fit.hpp"

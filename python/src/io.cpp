@@ -21,7 +21,6 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
@@ -30,6 +29,7 @@
 #include "casteljau/io/obj.hpp"
 #include "casteljau/io/ply.hpp"
 #include "casteljau/io/stl.hpp"
+#include "casteljau/io/tolerance.hpp"
 #include "casteljau/ops/mesh.hpp"
 
 namespace casteljau::python {

@@ -30,6 +30,7 @@
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/point_inversion.hpp"
 #include "casteljau/ops/tessellate.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "casteljau/surfaces/surface_view.hpp"
 
 namespace casteljau::python {

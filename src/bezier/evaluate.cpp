@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "casteljau/bezier/bernstein.hpp"
-#include "casteljau/core/tolerance.hpp"
 #include "casteljau/core/precondition.hpp"
 #include "../core/workspace.hpp"
 #include "de_casteljau.hpp"

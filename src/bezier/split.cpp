@@ -5,8 +5,8 @@
 #include <functional>
 #include <vector>
 
+#include "casteljau/bezier/tolerance.hpp"
 #include "casteljau/core/parameter_checks.hpp"
-#include "casteljau/core/tolerance.hpp"
 #include "de_casteljau.hpp"
 
 namespace casteljau {

@@ -8,6 +8,7 @@
 
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/bspline/tolerance.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "working_rows.hpp"
 

@@ -11,6 +11,7 @@
 #include "casteljau/bezier/degree.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
 #include "working_rows.hpp"
 

@@ -8,7 +8,6 @@
 
 #include "casteljau/core/model_numbers.hpp"
 #include "casteljau/core/point_array.hpp"
-#include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
 
 namespace casteljau {

@@ -43,7 +43,6 @@
 
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/bspline/evaluate.hpp"
-#include "casteljau/core/tolerance.hpp"
 #include "casteljau/core/precondition.hpp"
 #include "../core/workspace.hpp"
 #include "de_boor.hpp"

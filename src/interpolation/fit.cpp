@@ -25,6 +25,8 @@
 #include "casteljau/bspline/basis.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/core/tolerance.hpp"
+#include "casteljau/interpolation/tolerance.hpp"
 #include "../core/number_text.hpp"
 #include "collocation.hpp"
 #include "fit_banded.hpp"

@@ -23,7 +23,8 @@
 #include <span>
 #include <vector>
 
-#include "casteljau/core/tolerance.hpp"
+#include "casteljau/interpolation/tolerance.hpp"
+
 
 namespace casteljau::detail {
 

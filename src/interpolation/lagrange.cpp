@@ -1,6 +1,7 @@
 // Barycentric Lagrange interpolation (Berrut & Trefethen 2004) and its
 // conversion to a Bézier curve (see lagrange.hpp).
 #include "casteljau/interpolation/lagrange.hpp"
+#include "casteljau/interpolation/tolerance.hpp"
 
 #include <Eigen/Dense>
 
@@ -10,7 +11,6 @@
 #include <numbers>
 #include <string>
 
-#include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
 #include "input_checks.hpp"
 

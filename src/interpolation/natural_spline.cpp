@@ -1,11 +1,11 @@
 // Natural splines of order q in the B-spline basis (see natural_spline.hpp).
 #include "casteljau/interpolation/natural_spline.hpp"
+#include "casteljau/interpolation/tolerance.hpp"
 
 #include <algorithm>
 #include <string>
 #include <vector>
 
-#include "casteljau/core/tolerance.hpp"
 #include "collocation.hpp"
 
 namespace casteljau {

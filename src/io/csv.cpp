@@ -11,8 +11,10 @@
 #include <optional>
 #include <system_error>
 
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
+#include "casteljau/io/tolerance.hpp"
 #include "text.hpp"
 
 namespace casteljau {

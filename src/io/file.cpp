@@ -13,6 +13,8 @@
 
 #include "text.hpp"
 
+#include "casteljau/io/tolerance.hpp"
+
 namespace casteljau {
 namespace {
 

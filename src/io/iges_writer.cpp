@@ -11,8 +11,8 @@
 #include <variant>
 #include <vector>
 
-#include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/cad_exchange.hpp"
+#include "casteljau/io/tolerance.hpp"
 #include "casteljau/version.hpp"
 #include "exchange_geometry.hpp"
 

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "model_json_reader.hpp"
 #include "text.hpp"
 

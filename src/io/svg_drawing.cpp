@@ -24,6 +24,7 @@
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/svg_path.hpp"
+#include "casteljau/io/tolerance.hpp"
 #include "svg_length.hpp"
 #include "svg_scanner.hpp"
 #include "svg_transform.hpp"

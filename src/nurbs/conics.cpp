@@ -11,6 +11,7 @@
 
 #include "casteljau/core/model_numbers.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/nurbs/tolerance.hpp"
 #include "../core/number_text.hpp"
 
 namespace casteljau {

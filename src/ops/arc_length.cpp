@@ -15,6 +15,8 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/core/point_array.hpp"
+#include "casteljau/core/tolerance.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "../core/number_text.hpp"
 
 namespace casteljau {

@@ -15,7 +15,9 @@
 #include "casteljau/bezier/bernstein_roots.hpp"
 #include "casteljau/bezier/split.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/ops/curvature_extrema.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "certified_budget.hpp"
 
 namespace casteljau {

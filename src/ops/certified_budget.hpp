@@ -12,6 +12,7 @@
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/ops/tolerance.hpp"
 
 namespace casteljau::ops_detail {
 

@@ -13,6 +13,7 @@
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/core/model_numbers.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "bernstein_columns.hpp"
 
 namespace casteljau {

@@ -9,8 +9,10 @@
 
 #include "casteljau/bezier/bernstein_roots.hpp"
 #include "casteljau/bezier/split.hpp"
+#include "casteljau/bezier/tolerance.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/core/point_array.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "certified_budget.hpp"
 
 namespace casteljau {

@@ -9,8 +9,10 @@
 
 #include "casteljau/bezier/bernstein_roots.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
+#include "casteljau/bspline/tolerance.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/curves/differential_geometry.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "bernstein_columns.hpp"
 
 namespace casteljau {

@@ -13,6 +13,7 @@
 #include "casteljau/bezier/split.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/core/vec.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "../bezier/de_casteljau.hpp"
 #include "certified_budget.hpp"
 

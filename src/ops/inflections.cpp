@@ -6,7 +6,7 @@
 
 #include "casteljau/bezier/bernstein_roots.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
-#include "casteljau/core/tolerance.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "bernstein_columns.hpp"
 
 namespace casteljau {

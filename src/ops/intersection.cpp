@@ -15,7 +15,9 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bezier/split.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/ops/closest_point.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "bernstein_columns.hpp"
 
 namespace casteljau {

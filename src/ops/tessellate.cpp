@@ -48,6 +48,7 @@
 #include "tessellate_edges.hpp"
 #include "tessellate_estimate.hpp"
 #include "casteljau/core/progress.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "tessellate_quadtree.hpp"
 #include "tessellate_refinement.hpp"
 

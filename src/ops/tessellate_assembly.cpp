@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "casteljau/ops/tolerance.hpp"
+
 namespace casteljau::tessellation {
 
 std::uint32_t MeshAssembly::add_vertex(const Vec3& position) {

@@ -6,7 +6,8 @@
 #include <limits>
 #include <span>
 
-#include "casteljau/core/tolerance.hpp"
+#include "casteljau/ops/tolerance.hpp"
+
 
 namespace casteljau::tessellation {
 namespace {

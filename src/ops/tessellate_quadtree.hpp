@@ -18,8 +18,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "casteljau/core/tolerance.hpp"
 #include "casteljau/core/vec.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "casteljau/surfaces/surface_view.hpp"
 
 namespace casteljau::tessellation {

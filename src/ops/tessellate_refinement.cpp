@@ -7,8 +7,9 @@
 #include <cmath>
 #include <string>
 
-#include "casteljau/core/tolerance.hpp"
 #include "../core/number_text.hpp"
+
+#include "casteljau/ops/tolerance.hpp"
 
 namespace casteljau::tessellation {
 namespace {

@@ -7,6 +7,8 @@
 #include <limits>
 
 #include "casteljau/bezier/bernstein.hpp"
+#include "casteljau/core/tolerance.hpp"
+#include "casteljau/ops/tolerance.hpp"
 
 namespace casteljau::render {
 namespace {

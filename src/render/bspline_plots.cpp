@@ -11,6 +11,7 @@
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/render/layout.hpp"
 #include "casteljau/render/plots.hpp"
+#include "casteljau/render/tolerance.hpp"
 
 namespace casteljau::render {
 namespace {

@@ -13,6 +13,7 @@
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/ops/tessellate.hpp"
 #include "casteljau/render/surface_plots.hpp"
+#include "casteljau/render/tolerance.hpp"
 #include "casteljau/surfaces/revolution.hpp"
 #include "figure_list.hpp"
 

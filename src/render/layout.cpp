@@ -26,6 +26,7 @@
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/render/bernstein_graph.hpp"
 #include "casteljau/core/progress.hpp"
+#include "casteljau/render/tolerance.hpp"
 
 namespace casteljau::render {
 namespace {

@@ -13,6 +13,7 @@
 #include "casteljau/render/bspline_plots.hpp"
 #include "casteljau/render/layout.hpp"
 #include "casteljau/curves/differential_geometry.hpp"
+#include "casteljau/render/tolerance.hpp"
 
 namespace casteljau::render {
 namespace {

@@ -11,6 +11,7 @@
 
 #include "casteljau/ops/tessellate.hpp"
 #include "casteljau/render/bspline_plots.hpp"
+#include "casteljau/render/tolerance.hpp"
 #include "casteljau/surfaces/iso_curve.hpp"
 
 namespace casteljau::render {

@@ -10,6 +10,7 @@
 #include "casteljau/bspline/continuity.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "support/bspline_generators.hpp"
 #include "support/generators.hpp"
 

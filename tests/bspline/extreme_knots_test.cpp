@@ -19,16 +19,12 @@
 #include "casteljau/bspline/transform.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/surfaces/bspline_surface.hpp"
+#include "support/make.hpp"
 
 namespace casteljau {
 namespace {
 
-std::string message_of(const Status& status) { return status ? std::string("(accepted)") : status.error().message; }
-
-template <class T>
-std::string message_of(const Expected<T>& result) {
-  return result ? std::string("(accepted)") : result.error().message;
-}
+using test::message_of;
 
 PointArray line() { return PointArray::from_trusted(2, {0, 0, 1, 1}); }
 

@@ -11,6 +11,12 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "consumer: $*" >&2; exit 1; }
 
 prefix=$work/prefix
+# Every compile below goes through ccache when it is installed, with paths
+# relative to the temporary folder, so that the next run (in another
+# temporary folder) finds what this one compiled.
+if command -v ccache >/dev/null; then
+  export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR=$work CCACHE_NOHASHDIR=true
+fi
 cmake --install "$build_dir" --prefix "$prefix" >/dev/null
 [ -e "$prefix/include/casteljau/casteljau.hpp" ] || fail "no umbrella header installed"
 [ -e "$prefix/include/casteljau/version.hpp" ] || fail "no version header installed"

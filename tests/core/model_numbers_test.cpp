@@ -17,18 +17,14 @@
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/core/model_numbers.hpp"
 #include "casteljau/core/tolerance.hpp"
+#include "support/make.hpp"
 
 namespace casteljau {
 namespace {
 
+using test::message_of;
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-std::string message_of(const Status& status) { return status ? std::string("(accepted)") : status.error().message; }
-
-template <class T>
-std::string message_of(const Expected<T>& result) {
-  return result ? std::string("(accepted)") : result.error().message;
-}
 
 TEST(ModelNumbers, CoordinatesUpToTheBoundAreValid) {
   const double bound = tolerances::kMaxCoordinate;

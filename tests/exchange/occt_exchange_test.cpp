@@ -51,6 +51,7 @@
 #include "casteljau/nurbs/conics.hpp"
 #include "casteljau/surfaces/coons.hpp"
 #include "casteljau/surfaces/evaluate.hpp"
+#include "support/examples_dir.hpp"
 #include "casteljau/surfaces/refinement.hpp"
 #include "casteljau/surfaces/revolution.hpp"
 #include "support/bspline_generators.hpp"
@@ -301,7 +302,7 @@ void expect_read_alike(const std::vector<Model>& models) {
 }
 
 Model semicircle() {
-  return read_models_json(std::filesystem::path(CASTELJAU_EXAMPLES_DIR) / "semicircle.json").value().front();
+  return read_models_json(test::examples_dir() / "semicircle.json").value().front();
 }
 
 TEST(OcctExchange, TheSeedsSemicircleAndTheNurbsCircle) {

@@ -19,14 +19,11 @@
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/interpolation/catmull_rom.hpp"
 #include "support/exact.hpp"
+#include "support/examples_dir.hpp"
 #include "support/generators.hpp"
 
 namespace casteljau {
 namespace {
-
-// Set by tests/CMakeLists.txt (an absolute path: __FILE__ may be relative
-// to the build folder, e.g. under ccache's base_dir).
-std::filesystem::path examples_dir() { return CASTELJAU_EXAMPLES_DIR; }
 
 /// A decimal such as "-4.25" as the exact rational it denotes.
 mpq_class exact_decimal(const std::string& text) {
@@ -54,8 +51,8 @@ struct SeedPoints {
 };
 
 SeedPoints read_seed_points(const std::string& name) {
-  std::ifstream in(examples_dir() / name);
-  EXPECT_TRUE(in) << "cannot open " << (examples_dir() / name);
+  std::ifstream in(test::examples_dir() / name);
+  EXPECT_TRUE(in) << "cannot open " << (test::examples_dir() / name);
   SeedPoints result;
   std::vector<double> coordinates;
   std::string line;

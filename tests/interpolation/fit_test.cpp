@@ -26,6 +26,8 @@
 #include "../../src/interpolation/fit_banded.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "support/exact_basis.hpp"
+#include "support/exact_linear.hpp"
+#include "support/make.hpp"
 #include "support/splitmix.hpp"
 
 namespace casteljau {
@@ -33,36 +35,10 @@ namespace {
 
 using test::exact_basis;
 using test::exact_basis_derivative;
-using RationalMatrix = std::vector<std::vector<mpq_class>>;
-
-PointArray points_of(int dimension, std::vector<double> coordinates) {
-  return PointArray::make(dimension, std::move(coordinates)).value();
-}
-
-template <class T>
-std::string error_of(const Expected<T>& result) {
-  return result ? std::string("no error") : result.error().message;
-}
-
-/// Solves A X = B exactly (A square and invertible) by Gaussian elimination.
-RationalMatrix solve_exactly(RationalMatrix a, RationalMatrix b) {
-  const std::size_t n = a.size();
-  for (std::size_t col = 0; col < n; ++col) {
-    std::size_t pivot = col;
-    while (a[pivot][col] == 0) ++pivot;
-    std::swap(a[pivot], a[col]);
-    std::swap(b[pivot], b[col]);
-    for (std::size_t row = 0; row < n; ++row) {
-      if (row == col || a[row][col] == 0) continue;
-      const mpq_class factor = a[row][col] / a[col][col];
-      for (std::size_t k = col; k < n; ++k) a[row][k] -= factor * a[col][k];
-      for (std::size_t k = 0; k < b[row].size(); ++k) b[row][k] -= factor * b[col][k];
-    }
-  }
-  for (std::size_t row = 0; row < n; ++row)
-    for (auto& value : b[row]) value /= a[row][row];
-  return b;
-}
+using test::message_of;
+using test::points_of;
+using test::solve_exactly;
+using test::RationalMatrix;
 
 /// ∫_a^b N_j'' N_k'' exactly for degree 3: on each knot span the integrand is
 /// quadratic and Milne's rule (b − a)/3 (2 f(a+h/4) − f(a+h/2) + 2 f(a+3h/4))
@@ -179,7 +155,7 @@ TEST(FitLeastSquares, EqualsTheExactNormalEquations) {
         SCOPED_TRACE("p = " + std::to_string(p) + ", " + std::to_string(count) + " control points, " +
                      (ends == FitEnds::free ? "free ends" : "interpolated ends"));
         const auto fit = fit_least_squares(points, kParameters, p, count, ends);
-        ASSERT_TRUE(fit) << error_of(fit);
+        ASSERT_TRUE(fit) << message_of(fit);
         const auto knots = approximation_knots(kParameters, p, count);
         EXPECT_EQ(std::vector<double>(fit->curve.knots().begin(), fit->curve.knots().end()), knots);
         const ExactFit exact = exact_fit(points, kParameters, knots, p, ends, 0, false);
@@ -257,7 +233,7 @@ TEST(FitSmoothing, EqualsTheExactPenalizedSystem) {
       options.smoothing = lambda;
       options.ends = ends;
       const auto fit = fit_smoothing(points, kParameters, options);
-      ASSERT_TRUE(fit) << error_of(fit);
+      ASSERT_TRUE(fit) << message_of(fit);
       // Knots at every parameter: t_0⁴, t_1..t_10, t_11⁴, so m + p = 14 control points.
       std::vector<double> knots{0, 0, 0};
       knots.insert(knots.end(), kParameters.begin(), kParameters.end());
@@ -289,7 +265,7 @@ TEST(FitSmoothing, PenalizedFitWithFixedControlPointCountEqualsExactSystem) {
     options.smoothing = 0.0078125;
     options.ends = ends;
     const auto fit = fit_smoothing(points, t, options);
-    ASSERT_TRUE(fit) << error_of(fit);
+    ASSERT_TRUE(fit) << message_of(fit);
     const ExactFit exact = exact_fit(points, t, knots, 3, ends, mpq_class(0.0078125), true);
     EXPECT_LE(largest_error(fit->curve.control_points(), exact.control_points), 1e-11 * 4);
     EXPECT_NEAR(fit->effective_degrees_of_freedom, exact.trace.get_d(), 1e-11 * 9);
@@ -319,7 +295,7 @@ TEST(FitSmoothing, GcvChoiceMinimizesGcv) {
   std::vector<double> t;
   const PointArray points = noisy_sine(80, 7, t);
   const auto fit = fit_smoothing(points, t, SmoothingOptions{});
-  ASSERT_TRUE(fit) << error_of(fit);
+  ASSERT_TRUE(fit) << message_of(fit);
   EXPECT_TRUE(fit->smoothing_from_gcv);
   const double lambda = fit->smoothing;
   EXPECT_GT(lambda, 0.0);
@@ -346,7 +322,7 @@ TEST(FitSmoothing, EffectiveDegreesOfFreedomFallWithLambdaTowardsALine) {
     SmoothingOptions options;
     options.smoothing = lambda;
     const auto fit = fit_smoothing(points, t, options);
-    ASSERT_TRUE(fit) << error_of(fit);
+    ASSERT_TRUE(fit) << message_of(fit);
     EXPECT_LT(fit->effective_degrees_of_freedom, previous);
     EXPECT_GT(fit->effective_degrees_of_freedom, 2.0);
     previous = fit->effective_degrees_of_freedom;
@@ -403,7 +379,7 @@ TEST(FitToTolerance, UsesFewControlPointsForSmoothData) {
     coordinates.push_back(s * s * s - 2 * s);
   }
   const auto fit = fit_to_tolerance(points_of(1, coordinates), t, 3, Tolerance{1e-9});
-  ASSERT_TRUE(fit) << error_of(fit);
+  ASSERT_TRUE(fit) << message_of(fit);
   EXPECT_EQ(fit->curve.control_points().size(), 4u);
 }
 
@@ -412,7 +388,7 @@ TEST(FitToTolerance, RefusesATolerancePastRounding) {
   const PointArray points = noisy_sine(30, 1, t);
   const auto fit = fit_to_tolerance(points, t, 3, Tolerance{1e-300});
   ASSERT_FALSE(fit);
-  EXPECT_NE(error_of(fit).find("the tolerance 1e-300 is not reached: max error "), std::string::npos) << error_of(fit);
+  EXPECT_NE(message_of(fit).find("the tolerance 1e-300 is not reached: max error "), std::string::npos) << message_of(fit);
 }
 
 // --- the banded factorization ------------------------------------------------------
@@ -475,45 +451,45 @@ TEST(SymmetricBand, RefusesASingularMatrix) {
 TEST(Fit, RefusesBadInputWithOneClearMessage) {
   const PointArray points = dyadic_points();
   const std::vector<double> t = kParameters;
-  EXPECT_EQ(error_of(fit_least_squares(points_of(2, {0, 0, 1, 1, 2, 0}), std::vector<double>{0, 0.5, 1}, 3, 4)),
+  EXPECT_EQ(message_of(fit_least_squares(points_of(2, {0, 0, 1, 1, 2, 0}), std::vector<double>{0, 0.5, 1}, 3, 4)),
             "a fit of degree 3 needs at least 4 points, got 3");
-  EXPECT_EQ(error_of(fit_least_squares(points, t, 3, 3)), "a fit of degree 3 needs at least 4 control points, got 3");
-  EXPECT_EQ(error_of(fit_least_squares(points, t, 3, 13)),
+  EXPECT_EQ(message_of(fit_least_squares(points, t, 3, 3)), "a fit of degree 3 needs at least 4 control points, got 3");
+  EXPECT_EQ(message_of(fit_least_squares(points, t, 3, 13)),
             "13 control points for 12 points: a least-squares fit takes at most as many control points as points");
-  EXPECT_EQ(error_of(fit_least_squares(points, std::span<const double>(t).first(11), 3, 5)),
+  EXPECT_EQ(message_of(fit_least_squares(points, std::span<const double>(t).first(11), 3, 5)),
             "a fit needs one parameter per point: 11 parameters for 12 points");
-  EXPECT_EQ(error_of(fit_least_squares(points, t, 0, 5)), "degree 0 is outside 1..10000");
+  EXPECT_EQ(message_of(fit_least_squares(points, t, 0, 5)), "degree 0 is outside 1..10000");
   std::vector<double> repeated = t;
   repeated[4] = repeated[3];
-  EXPECT_EQ(error_of(fit_least_squares(points, repeated, 3, 5)),
+  EXPECT_EQ(message_of(fit_least_squares(points, repeated, 3, 5)),
             "parameters must increase strictly: parameter 4 is 0.25, parameter 3 is 0.25");
   std::vector<double> nan_parameter = t;
   nan_parameter[2] = std::nan("");
-  EXPECT_EQ(error_of(fit_least_squares(points, nan_parameter, 3, 5)), "parameter 2 is NaN");
+  EXPECT_EQ(message_of(fit_least_squares(points, nan_parameter, 3, 5)), "parameter 2 is NaN");
   PointArray nan_point = points;
   nan_point[5][1] = std::nan("");
-  EXPECT_EQ(error_of(fit_least_squares(nan_point, t, 3, 5)), "coordinate 1 of point 5 is NaN");
+  EXPECT_EQ(message_of(fit_least_squares(nan_point, t, 3, 5)), "coordinate 1 of point 5 is NaN");
 
   SmoothingOptions negative;
   negative.smoothing = -1.0;
-  EXPECT_EQ(error_of(fit_smoothing(points, t, negative)), "the smoothing λ is -1, it must be >= 0");
+  EXPECT_EQ(message_of(fit_smoothing(points, t, negative)), "the smoothing λ is -1, it must be >= 0");
   SmoothingOptions linear;
   linear.degree = 1;
-  EXPECT_EQ(error_of(fit_smoothing(points, t, linear)),
+  EXPECT_EQ(message_of(fit_smoothing(points, t, linear)),
             "smoothing needs degree 2 or more (the penalty integrates C''), got degree 1");
   SmoothingOptions zero;
   zero.smoothing = 0.0;
-  EXPECT_EQ(error_of(fit_smoothing(points, t, zero)),
+  EXPECT_EQ(message_of(fit_smoothing(points, t, zero)),
             "the smoothing λ = 0 leaves 14 control points (knots at every parameter) for 12 points: give λ > 0 or "
             "fewer control points");
   zero.control_point_count = 8;  // then λ = 0 is plain least squares
   const auto plain = fit_smoothing(points, t, zero);
-  ASSERT_TRUE(plain) << error_of(plain);
+  ASSERT_TRUE(plain) << message_of(plain);
   EXPECT_EQ(plain->curve, fit_least_squares(points, t, 3, 8, FitEnds::free).value().curve);
 
-  EXPECT_EQ(error_of(fit_to_tolerance(points, t, 3, Tolerance{0.0})), "the tolerance is 0, it must be > 0");
-  EXPECT_EQ(error_of(fit_to_tolerance(points, t, 3, Tolerance{-1.0})), "the tolerance is -1, it must be > 0");
-  EXPECT_EQ(error_of(fit_to_tolerance(points, t, 3, Tolerance{std::nan("")})), "the tolerance is NaN");
+  EXPECT_EQ(message_of(fit_to_tolerance(points, t, 3, Tolerance{0.0})), "the tolerance is 0, it must be > 0");
+  EXPECT_EQ(message_of(fit_to_tolerance(points, t, 3, Tolerance{-1.0})), "the tolerance is -1, it must be > 0");
+  EXPECT_EQ(message_of(fit_to_tolerance(points, t, 3, Tolerance{std::nan("")})), "the tolerance is NaN");
 }
 
 // GCV does not depend on the parameter's units: stretching x from [0, 1] to
@@ -556,7 +532,7 @@ TEST(FitSmoothing, ALambdaThatMakesTheSystemSingularIsCalledTooLargeOrTooSmall) 
   const PointArray points = noisy_sine(80, 7, t);
   SmoothingOptions options;
   options.smoothing = 1e308;
-  const std::string large = error_of(fit_smoothing(points, t, options));
+  const std::string large = message_of(fit_smoothing(points, t, options));
   EXPECT_EQ(large.find("the smoothing λ = 1e+308 is too large for these data: λ·tr(Ω) outweighs tr(BᵀB) by about "
                        "10^"),
             0u)
@@ -569,7 +545,7 @@ TEST(FitSmoothing, ALambdaThatMakesTheSystemSingularIsCalledTooLargeOrTooSmall) 
   EXPECT_EQ(fit_smoothing(points, t, options).error().kind, ErrorKind::singular);
   options.smoothing = 1e-308;
   EXPECT_EQ(fit_smoothing(points, t, options).error().kind, ErrorKind::singular);
-  const std::string small = error_of(fit_smoothing(points, t, options));
+  const std::string small = message_of(fit_smoothing(points, t, options));
   EXPECT_EQ(small.find("the smoothing λ = 1e-308 is too small for these data: λ·tr(Ω) is about 10^"), 0u) << small;
   EXPECT_NE(small.find("too little to determine 82 control points from 80 points"), std::string::npos) << small;
   options.control_point_count = 10;  // fewer control points than points: a tiny λ is least squares

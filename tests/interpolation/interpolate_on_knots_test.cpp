@@ -23,47 +23,22 @@
 #include <vector>
 
 #include "casteljau/bspline/evaluate.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/interpolation/fit.hpp"
 #include "casteljau/interpolation/spline_interpolation.hpp"
 #include "support/exact_basis.hpp"
+#include "support/exact_linear.hpp"
+#include "support/make.hpp"
 
 namespace casteljau {
 namespace {
 
 using test::exact_basis;
 using test::exact_basis_derivative;
-using Rational = std::vector<std::vector<mpq_class>>;
-
-PointArray points_of(int dimension, std::vector<double> coordinates) {
-  return PointArray::make(dimension, std::move(coordinates)).value();
-}
-
-template <class T>
-std::string error_of(const Expected<T>& result) {
-  return result ? std::string("no error") : result.error().message;
-}
-
-/// Solves the square system A X = B exactly (A invertible; B n x width).
-Rational solve_exactly(Rational a, Rational b) {
-  const std::size_t n = a.size();
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t pivot = c;
-    while (pivot < n && a[pivot][c] == 0) ++pivot;
-    EXPECT_LT(pivot, n) << "exact system singular";
-    if (pivot == n) return {};
-    std::swap(a[pivot], a[c]);
-    std::swap(b[pivot], b[c]);
-    for (std::size_t r = 0; r < n; ++r) {
-      if (r == c || a[r][c] == 0) continue;
-      const mpq_class f = a[r][c] / a[c][c];
-      for (std::size_t k = c; k < n; ++k) a[r][k] -= f * a[c][k];
-      for (std::size_t k = 0; k < b[r].size(); ++k) b[r][k] -= f * b[c][k];
-    }
-  }
-  for (std::size_t r = 0; r < n; ++r)
-    for (auto& v : b[r]) v /= a[r][r];
-  return b;
-}
+using test::message_of;
+using test::points_of;
+using test::solve_exactly;
+using Rational = test::RationalMatrix;
 
 /// max |computed - exact| over all control point coordinates, relative to
 /// max(1, max |exact|).
@@ -129,7 +104,7 @@ TEST(InterpolateOnKnots, CubicOnGivenKnotsIsTheExactCollocationSolution) {
   const std::vector<double> knots = {0, 0, 0, 0, 0.75, 1.5, 3.0, 4, 4, 4, 4};
   const PointArray points = points_of(2, {0, 1, 1, 3, 2.5, -1, 4, 0.5, 3, 2, 1, -2.25, 0, 0});
   const auto curve = interpolate_on_knots(points, t, 3, knots);
-  ASSERT_TRUE(curve) << error_of(curve);
+  ASSERT_TRUE(curve) << message_of(curve);
   EXPECT_EQ(std::vector<double>(curve->knots().begin(), curve->knots().end()), knots);
   EXPECT_LE(relative_error(curve->control_points(), exact_interpolation(knots, 3, t, points, {})), 1e-14);
 }
@@ -142,7 +117,7 @@ TEST(InterpolateOnKnots, QuarticWithEndDerivativesIsTheExactCollocationSolution)
   const std::vector<EndDerivative> derivatives = {
       {false, 1, {4.0}}, {true, 2, {-3.5}}, {false, 3, {12.0}}};
   const auto curve = interpolate_on_knots(points, t, 4, knots, derivatives);
-  ASSERT_TRUE(curve) << error_of(curve);
+  ASSERT_TRUE(curve) << message_of(curve);
   EXPECT_LE(relative_error(curve->control_points(), exact_interpolation(knots, 4, t, points, derivatives)), 1e-13);
 }
 
@@ -152,7 +127,7 @@ TEST(InterpolateOnKnots, UnclampedKnotsAreAllowedWhenTheParametersSpanTheDomain)
   const std::vector<double> knots = {-2, -1, 0, 1, 2.5, 4, 5, 6};
   const PointArray points = points_of(2, {1, 0, 2, 2, -1, 1.5, 0.5, -0.5, 3, 3});
   const auto curve = interpolate_on_knots(points, t, 2, knots);
-  ASSERT_TRUE(curve) << error_of(curve);
+  ASSERT_TRUE(curve) << message_of(curve);
   EXPECT_LE(relative_error(curve->control_points(), exact_interpolation(knots, 2, t, points, {})), 1e-14);
 }
 
@@ -160,7 +135,7 @@ TEST(InterpolateOnKnots, LinearInterpolationOnTheParametersIsThePolyline) {
   const std::vector<double> t = {0.0, 1.0, 3.0, 4.0};
   const PointArray points = points_of(1, {1, 5, -2, 0});
   const auto curve = interpolate_on_knots(points, t, 1, {0, 0, 1, 3, 4, 4});
-  ASSERT_TRUE(curve) << error_of(curve);
+  ASSERT_TRUE(curve) << message_of(curve);
   for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(curve->control_points()[i][0], points[i][0]);
 }
 
@@ -173,25 +148,25 @@ class InterpolateOnKnotsErrors : public ::testing::Test {
 };
 
 TEST_F(InterpolateOnKnotsErrors, AKnotCountThatDoesNotMatchTheConditions) {
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2, 3, 4, 7, 7, 7, 7})),
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2, 3, 4, 7, 7, 7, 7})),
             "11 knots given, 8 points and 0 end derivatives determine 8 control points of degree 3, which need 12 "
             "knots (control points + degree + 1)");
   const std::vector<EndDerivative> one = {{false, 1, {0.0}}};
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2, 3, 4, 5, 7, 7, 7, 7}, one)),
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2, 3, 4, 5, 7, 7, 7, 7}, one)),
             "12 knots given, 8 points and 1 end derivatives determine 9 control points of degree 3, which need 13 "
             "knots (control points + degree + 1)");
   const PointArray three = points_of(1, {0, 1, 0});
-  EXPECT_EQ(error_of(interpolate_on_knots(three, std::vector<double>{0.0, 1.0, 2.0}, 3, {0, 0, 0, 0, 2, 2, 2})),
+  EXPECT_EQ(message_of(interpolate_on_knots(three, std::vector<double>{0.0, 1.0, 2.0}, 3, {0, 0, 0, 0, 2, 2, 2})),
             "3 points and 0 end derivatives determine 3 control points, degree 3 needs at least 4");
 }
 
 TEST_F(InterpolateOnKnotsErrors, TheSchoenbergWhitneyConditionNamesTheParameterAndTheSupport) {
   // Four interior knots crowded into (2, 3): N_3's support [0, 2.8) misses t_3 = 3.
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2.25, 2.5, 2.625, 2.75, 7, 7, 7, 7})),
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2.25, 2.5, 2.625, 2.75, 7, 7, 7, 7})),
             "parameter 3 (3) is not inside the support [0, 2.75) of basis function 3: the knots and parameters "
             "violate the Schoenberg–Whitney condition, no spline on these knots interpolates them");
   // Crowded to the right: N_4's support [4.25, 7) starts after t_4 = 4.
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 4.25, 4.5, 4.75, 5, 7, 7, 7, 7})),
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 4.25, 4.5, 4.75, 5, 7, 7, 7, 7})),
             "parameter 4 (4) is not inside the support [4.25, 7) of basis function 4: the knots and parameters "
             "violate the Schoenberg–Whitney condition, no spline on these knots interpolates them");
 }
@@ -202,29 +177,29 @@ TEST_F(InterpolateOnKnotsErrors, DerivativesTheSplineCannotMeetLeaveASingularSys
   const std::vector<EndDerivative> third = {{false, 3, {1.0}}, {true, 3, {2.0}}};
   const auto bad = interpolate_on_knots(points_of(1, {0, 1}), std::vector<double>{0.0, 1.0}, 3,
                                         {0, 0, 0, 0, 1, 1, 1, 1}, third);
-  EXPECT_NE(error_of(bad).find("singular"), std::string::npos) << error_of(bad);
+  EXPECT_NE(message_of(bad).find("singular"), std::string::npos) << message_of(bad);
 }
 
 TEST_F(InterpolateOnKnotsErrors, BadKnotsAndParameters) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 3, 2, 4, 5, 7, 7, 7, 7})),
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 3, 2, 4, 5, 7, 7, 7, 7})),
             "knot 5 (2) is smaller than knot 4 (3), knots must be non-decreasing");
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2, nan, 4, 5, 7, 7, 7, 7})), "knot 5 is NaN");
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 3, {-1, -1, -1, -1, 2, 3, 4, 5, 7, 7, 7, 7})),
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2, nan, 4, 5, 7, 7, 7, 7})), "knot 5 is NaN");
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 3, {-1, -1, -1, -1, 2, 3, 4, 5, 7, 7, 7, 7})),
             "parameter 0 (0) is not knot 3 (-1), the start of the knots' domain: the parameters must run from knot 3 "
             "to knot 8");
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2, 3, 4, 5, 8, 8, 8, 8})),
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 2, 3, 4, 5, 8, 8, 8, 8})),
             "parameter 7 (7) is not knot 8 (8), the end of the knots' domain: the parameters must run from knot 3 to "
             "knot 8");
   std::vector<double> backwards = t;
   std::swap(backwards[2], backwards[3]);
-  EXPECT_NE(error_of(interpolate_on_knots(points, backwards, 3, {0, 0, 0, 0, 2, 3, 4, 5, 7, 7, 7, 7})).find(
+  EXPECT_NE(message_of(interpolate_on_knots(points, backwards, 3, {0, 0, 0, 0, 2, 3, 4, 5, 7, 7, 7, 7})).find(
                 "parameters must increase strictly"),
             std::string::npos);
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 0, {0, 1, 2, 3, 4, 5, 6, 7, 7})),
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 0, {0, 1, 2, 3, 4, 5, 6, 7, 7})),
             "degree 0 is outside 1.." + std::to_string(tolerances::kMaxBSplineDegree) + " for B-spline interpolation");
   const std::vector<EndDerivative> high = {{true, 4, {0.0}}};
-  EXPECT_EQ(error_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 7, 7, 7, 7}, high)),
+  EXPECT_EQ(message_of(interpolate_on_knots(points, t, 3, {0, 0, 0, 0, 1, 2, 3, 4, 5, 7, 7, 7, 7}, high)),
             "end derivative 0 has order 4, orders must be in 1..3 for degree 3");
 }
 
@@ -327,14 +302,14 @@ TEST(FitLeastSquaresOnKnots, WeightedFitIsTheExactNormalEquationsSolution) {
   // Clamped cubic and unclamped quadratic knots.
   const std::vector<double> clamped = {0, 0, 0, 0, 1.5, 2.75, 4.5, 6.25, 9, 9, 9, 9};
   const auto fit = fit_least_squares_on_knots(points, t, 3, clamped, weights);
-  ASSERT_TRUE(fit) << error_of(fit);
+  ASSERT_TRUE(fit) << message_of(fit);
   EXPECT_LE(relative_error(fit->curve.control_points(), exact_weighted_fit(clamped, 3, t, points, weights)), 1e-13);
   const std::vector<double> unclamped = {-1, -0.5, 0, 2, 3.5, 5, 7.5, 9, 9.5, 10};
   const auto open = fit_least_squares_on_knots(points, t, 2, unclamped, weights);
-  ASSERT_TRUE(open) << error_of(open);
+  ASSERT_TRUE(open) << message_of(open);
   EXPECT_LE(relative_error(open->curve.control_points(), exact_weighted_fit(unclamped, 2, t, points, weights)), 1e-13);
   const auto plain = fit_least_squares_on_knots(points, t, 3, clamped);
-  ASSERT_TRUE(plain) << error_of(plain);
+  ASSERT_TRUE(plain) << message_of(plain);
   EXPECT_LE(relative_error(plain->curve.control_points(), exact_weighted_fit(clamped, 3, t, points, {})), 1e-13);
   // The errors are unweighted distances at every point, zero-weight ones included.
   for (std::size_t i = 0; i < t.size(); ++i)
@@ -352,9 +327,9 @@ TEST(FitLeastSquaresOnKnots, UnitWeightsOnApproximationKnotsGiveFitLeastSquares)
   for (int p = 1; p <= 5; ++p) {
     for (const FitEnds ends : {FitEnds::free, FitEnds::interpolated}) {
       const auto reference = fit_least_squares(points, t, p, 11, ends);
-      ASSERT_TRUE(reference) << error_of(reference);
+      ASSERT_TRUE(reference) << message_of(reference);
       const auto fit = fit_least_squares_on_knots(points, t, p, approximation_knots(t, p, 11), ones, ends);
-      ASSERT_TRUE(fit) << error_of(fit);
+      ASSERT_TRUE(fit) << message_of(fit);
       EXPECT_EQ(fit->curve, reference->curve);
       EXPECT_EQ(fit->errors, reference->errors);
     }
@@ -392,7 +367,7 @@ TEST(FitLeastSquaresOnKnots, BadInputNamesTheProblem) {
   const PointArray points = points_of(1, coordinates);
   const std::vector<double> knots = {0, 0, 0, 0, 5, 29.0 / 3, 29.0 / 3, 29.0 / 3, 29.0 / 3};
   // Five knots between t_15 = 5 and t_16 = 5.33...: N_4's support [5.05, 5.25) holds no point.
-  EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3,
+  EXPECT_EQ(message_of(fit_least_squares_on_knots(points, t, 3,
                                                 {0, 0, 0, 0, 5.05, 5.1, 5.15, 5.2, 5.25, 29.0 / 3, 29.0 / 3, 29.0 / 3,
                                                  29.0 / 3})),
             "no point is left for basis function 4 (support [5.05, 5.25)): the knots and "
@@ -400,24 +375,24 @@ TEST(FitLeastSquaresOnKnots, BadInputNamesTheProblem) {
   // Zero weights on the right half leave the last basis function without a point.
   std::vector<double> half(30, 1.0);
   std::fill(half.begin() + 15, half.end(), 0.0);
-  EXPECT_NE(error_of(fit_least_squares_on_knots(points, t, 3, knots, half)).find("Schoenberg"), std::string::npos);
-  EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3, knots, std::vector<double>(29, 1.0))),
+  EXPECT_NE(message_of(fit_least_squares_on_knots(points, t, 3, knots, half)).find("Schoenberg"), std::string::npos);
+  EXPECT_EQ(message_of(fit_least_squares_on_knots(points, t, 3, knots, std::vector<double>(29, 1.0))),
             "29 weights for 30 points, a weighted fit needs one weight per point");
   std::vector<double> negative(30, 1.0);
   negative[3] = -1.0;
-  EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3, knots, negative)),
+  EXPECT_EQ(message_of(fit_least_squares_on_knots(points, t, 3, knots, negative)),
             "weight 3 is -1, weights must be >= 0");
   negative[3] = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3, knots, negative)), "weight 3 is NaN");
-  EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3, {1, 1, 1, 1, 5, 10, 10, 10, 10})),
+  EXPECT_EQ(message_of(fit_least_squares_on_knots(points, t, 3, knots, negative)), "weight 3 is NaN");
+  EXPECT_EQ(message_of(fit_least_squares_on_knots(points, t, 3, {1, 1, 1, 1, 5, 10, 10, 10, 10})),
             "parameter 0 (0) is outside the knots' domain [1, 10]");
-  EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3, {0, 0, 0, 0, 6, 5, 10, 10, 10, 10})),
+  EXPECT_EQ(message_of(fit_least_squares_on_knots(points, t, 3, {0, 0, 0, 0, 6, 5, 10, 10, 10, 10})),
             "knot 5 (5) is smaller than knot 4 (6), knots must be non-decreasing");
-  EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3, {0, 0, 0, 0, std::nan(""), 10, 10, 10, 10})),
+  EXPECT_EQ(message_of(fit_least_squares_on_knots(points, t, 3, {0, 0, 0, 0, std::nan(""), 10, 10, 10, 10})),
             "knot 4 is NaN");
-  EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3, {0, 10})),
+  EXPECT_EQ(message_of(fit_least_squares_on_knots(points, t, 3, {0, 10})),
             "2 knots given, a B-spline of degree 3 needs at least 8 (degree + 1 control points)");
-  EXPECT_EQ(error_of(fit_least_squares_on_knots(points, t, 3, {-1, 0, 0, 0, 5, 29.0 / 3, 29.0 / 3, 29.0 / 3, 29.0 / 3},
+  EXPECT_EQ(message_of(fit_least_squares_on_knots(points, t, 3, {-1, 0, 0, 0, 5, 29.0 / 3, 29.0 / 3, 29.0 / 3, 29.0 / 3},
                                                 {}, FitEnds::interpolated)),
             "a fit with interpolated ends needs knots clamped at the first and last parameters (0 and "
             "9.666666666666666, degree + 1 = 4 copies each)");

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "casteljau/bezier/evaluate.hpp"
-#include "casteljau/core/tolerance.hpp"
+#include "casteljau/interpolation/tolerance.hpp"
 #include "support/exact.hpp"
 
 namespace casteljau {
@@ -64,7 +64,7 @@ RC_GTEST_PROP(Lagrange, BarycentricEqualsTheExactLagrangeFormula, ()) {
 
 /// A polynomial with coefficients i/8 and degree <= 6: at nodes k/16 in
 /// [−2, 2] its values are exact doubles (numerators below 2^40).
-struct Polynomial {
+struct ExactPolynomial {
   std::vector<double> coefficients;
   mpq_class operator()(const mpq_class& t) const {
     mpq_class value = 0;
@@ -76,7 +76,7 @@ struct Polynomial {
 RC_GTEST_PROP(Lagrange, ReproducesPolynomialsExactlyUpToRounding, ()) {
   const int degree = *rc::gen::inRange(0, 7);
   const int count = degree + 1 + *rc::gen::inRange(0, 3);
-  Polynomial polynomial{*rc::gen::container<std::vector<double>>(
+  ExactPolynomial polynomial{*rc::gen::container<std::vector<double>>(
       static_cast<std::size_t>(degree) + 1, rc::gen::map(rc::gen::inRange(-32, 33), [](int i) { return i / 8.0; }))};
   const auto nodes = *dyadic_nodes(std::max(count, 2));
   std::vector<double> values;
@@ -99,7 +99,7 @@ RC_GTEST_PROP(Lagrange, ReproducesPolynomialsExactlyUpToRounding, ()) {
 }
 
 TEST(Lagrange, ReproducesPolynomialsOnChebyshevNodes) {
-  const Polynomial polynomial{{0.5, -1.25, 3, 0.125, -2, 0.75}};  // degree 5
+  const ExactPolynomial polynomial{{0.5, -1.25, 3, 0.125, -2, 0.75}};  // degree 5
   for (std::size_t count : {6u, 11u, 21u}) {
     const auto nodes = chebyshev_parameters(count, {-2, 3}).value();
     std::vector<double> values;

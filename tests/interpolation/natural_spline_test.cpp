@@ -14,8 +14,8 @@
 
 #include "casteljau/bspline/continuity.hpp"
 #include "casteljau/bspline/evaluate.hpp"
-#include "casteljau/core/tolerance.hpp"
 #include "casteljau/interpolation/spline_interpolation.hpp"
+#include "casteljau/interpolation/tolerance.hpp"
 #include "support/exact.hpp"
 #include "support/exact_natural_spline.hpp"
 #include "support/generators.hpp"

@@ -11,16 +11,15 @@
 #include <string>
 
 #include "support/generators.hpp"
+#include "support/make.hpp"
 
 namespace casteljau {
 namespace {
 
+using test::message_of;
+
 PointArray plane_points(std::vector<double> coordinates) {
   return PointArray::make(2, std::move(coordinates)).value();
-}
-
-std::string error_of(const Expected<std::vector<double>>& result) {
-  return result ? std::string("no error") : result.error().message;
 }
 
 TEST(ParameterValues, UniformStepsAreExactFractions) {
@@ -62,26 +61,26 @@ TEST(ParameterValues, HugeAndTinyCoordinatesNeitherOverflowNorUnderflow) {
   for (const double scale : {1e-300, 1e-200, 1.0, 1e50, 1e99}) {
     const auto t = parameter_values(plane_points({0, 0, 3 * scale, 4 * scale, 3 * scale, 10 * scale}),
                                     Parameterization::chord_length);
-    ASSERT_TRUE(t) << error_of(t);
+    ASSERT_TRUE(t) << message_of(t);
     EXPECT_NEAR((*t)[1], 5.0 / 11.0, 1e-15) << scale;
   }
   // Beyond it, the points are refused (core/model_numbers.hpp).
-  EXPECT_EQ(error_of(parameter_values(plane_points({0, 0, 3e200, 4e200}), Parameterization::chord_length)),
+  EXPECT_EQ(message_of(parameter_values(plane_points({0, 0, 3e200, 4e200}), Parameterization::chord_length)),
             "coordinate 0 of point 1 is 3e+200, outside [-1e+100, 1e+100], the range of coordinates");
 }
 
 TEST(ParameterValues, RefusesCoincidentConsecutivePointsNamingThem) {
   const auto points = plane_points({0, 0, 1, 1, 1, 1, 2, 0});
-  EXPECT_EQ(error_of(parameter_values(points, Parameterization::chord_length)),
+  EXPECT_EQ(message_of(parameter_values(points, Parameterization::chord_length)),
             "points 1 and 2 coincide, chord parameters need distinct consecutive points");
-  EXPECT_EQ(error_of(parameter_values(points, Parameterization::centripetal)),
+  EXPECT_EQ(message_of(parameter_values(points, Parameterization::centripetal)),
             "points 1 and 2 coincide, centripetal parameters need distinct consecutive points");
   const auto closed = plane_points({0, 0, 1, 0, 1, 1, 0, 0});
-  EXPECT_EQ(error_of(parameter_values(closed, Parameterization::chord_length, Closure::closed)),
+  EXPECT_EQ(message_of(parameter_values(closed, Parameterization::chord_length, Closure::closed)),
             "the last point 3 and the first point 0 coincide, chord parameters need distinct consecutive points");
-  EXPECT_EQ(error_of(parameter_values(plane_points({0, 0}), Parameterization::uniform)),
+  EXPECT_EQ(message_of(parameter_values(plane_points({0, 0}), Parameterization::uniform)),
             "interpolation needs at least 2 points, got 1");
-  EXPECT_EQ(error_of(parameter_values(plane_points({5, 5, 5, 5}), Parameterization::chord_length)),
+  EXPECT_EQ(message_of(parameter_values(plane_points({5, 5, 5, 5}), Parameterization::chord_length)),
             "points 0 and 1 coincide, chord parameters need distinct consecutive points");
 }
 
@@ -89,15 +88,15 @@ TEST(ParameterValues, RefusesStepsBelowTheRoundingOfTheTotal) {
   const auto points = plane_points({0, 0, 1, 0, 1 + 1e-17, 0, 2, 0});
   const auto t = parameter_values(points, Parameterization::chord_length);
   // 1 + 1e-17 rounds to 1: the points coincide as stored.
-  EXPECT_EQ(error_of(t), "points 1 and 2 coincide, chord parameters need distinct consecutive points");
+  EXPECT_EQ(message_of(t), "points 1 and 2 coincide, chord parameters need distinct consecutive points");
   const auto far = plane_points({0, 0, 1e17, 0, 1e17, 1.0, 2e17, 0});
-  EXPECT_EQ(error_of(parameter_values(far, Parameterization::chord_length)),
+  EXPECT_EQ(message_of(parameter_values(far, Parameterization::chord_length)),
             "points 1 and 2 are too close together (chord step below the rounding of the total length)");
 }
 
 TEST(ParameterValues, RefusesNonFiniteCoordinates) {
   const auto points = PointArray::from_trusted(2, {0, 0, 1, std::nan(""), 2, 0});
-  EXPECT_EQ(error_of(parameter_values(points, Parameterization::uniform)), "coordinate 1 of point 1 is NaN");
+  EXPECT_EQ(message_of(parameter_values(points, Parameterization::uniform)), "coordinate 1 of point 1 is NaN");
 }
 
 TEST(ParameterValues, NamesRoundTrip) {
@@ -116,11 +115,11 @@ TEST(FunctionParameters, TakesTheFirstColumnAndRequiresItToIncrease) {
   const auto t = function_parameters(plane_points({-1, 5, 0.5, 2, 3, 3}));
   ASSERT_TRUE(t);
   EXPECT_EQ(*t, (std::vector<double>{-1, 0.5, 3}));
-  EXPECT_EQ(error_of(function_parameters(plane_points({0, 1, 2, 1, 2, 5}))),
+  EXPECT_EQ(message_of(function_parameters(plane_points({0, 1, 2, 1, 2, 5}))),
             "x must increase strictly: point 2 has x = 2, point 1 has x = 2");
-  EXPECT_EQ(error_of(function_parameters(plane_points({0, 1, 0.1, 1, 0.05, 5}))),
+  EXPECT_EQ(message_of(function_parameters(plane_points({0, 1, 0.1, 1, 0.05, 5}))),
             "x must increase strictly: point 2 has x = 0.05, point 1 has x = 0.1");
-  EXPECT_EQ(error_of(function_parameters(PointArray::make(1, {0, 1, 2}).value())),
+  EXPECT_EQ(message_of(function_parameters(PointArray::make(1, {0, 1, 2}).value())),
             "a function y(x) needs at least 2 columns (x and y), got 1");
 }
 

@@ -17,34 +17,13 @@
 #include "casteljau/bspline/evaluate.hpp"
 #include "support/exact.hpp"
 #include "support/exact_basis.hpp"
+#include "support/exact_linear.hpp"
 #include "support/generators.hpp"
 
 namespace casteljau {
 namespace {
 
 std::vector<double> knots_of(const BSplineCurve& curve) { return {curve.knots().begin(), curve.knots().end()}; }
-
-/// Solves the square rational system rows * X = rhs (rows x (n | d)) in place.
-std::vector<std::vector<mpq_class>> exact_solve(std::vector<std::vector<mpq_class>> rows, std::size_t width) {
-  const std::size_t n = rows.size();
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t pivot = c;
-    while (pivot < n && rows[pivot][c] == 0) ++pivot;
-    EXPECT_LT(pivot, n) << "exact system singular";
-    if (pivot == n) return {};
-    std::swap(rows[c], rows[pivot]);
-    const mpq_class inverse = 1 / rows[c][c];
-    for (auto& v : rows[c]) v *= inverse;
-    for (std::size_t r = 0; r < n; ++r) {
-      if (r == c || rows[r][c] == 0) continue;
-      const mpq_class f = rows[r][c];
-      for (std::size_t k = c; k < n + width; ++k) rows[r][k] -= f * rows[c][k];
-    }
-  }
-  std::vector<std::vector<mpq_class>> x(n);
-  for (std::size_t r = 0; r < n; ++r) x[r].assign(rows[r].begin() + static_cast<std::ptrdiff_t>(n), rows[r].end());
-  return x;
-}
 
 /// The control points of the clamped interpolant on `knots`, from the
 /// definition: rows N_j(t_i) = P_i, and rows N_j^(k)(t) = D for the end
@@ -53,21 +32,20 @@ std::vector<std::vector<mpq_class>> exact_clamped(const std::vector<double>& kno
                                                   const PointArray& points,
                                                   const std::vector<EndDerivative>& derivatives) {
   const std::size_t n = knots.size() - static_cast<std::size_t>(p) - 1, d = static_cast<std::size_t>(points.dimension());
-  std::vector<std::vector<mpq_class>> rows;
+  test::RationalMatrix a, b;
   for (std::size_t i = 0; i < t.size(); ++i) {
-    std::vector<mpq_class> row(n + d, 0);
-    for (std::size_t j = 0; j < n; ++j) row[j] = test::exact_basis(knots, static_cast<int>(j), p, t[i]);
-    for (std::size_t k = 0; k < d; ++k) row[n + k] = points[i][k];
-    rows.push_back(row);
+    a.emplace_back(n, 0);
+    for (std::size_t j = 0; j < n; ++j) a.back()[j] = test::exact_basis(knots, static_cast<int>(j), p, t[i]);
+    b.emplace_back(points[i].begin(), points[i].end());
   }
   for (const EndDerivative& e : derivatives) {
-    std::vector<mpq_class> row(n + d, 0);
+    a.emplace_back(n, 0);
     const double u = e.at_end ? t.back() : t.front();
-    for (std::size_t j = 0; j < n; ++j) row[j] = test::exact_basis_derivative(knots, static_cast<int>(j), p, e.order, u);
-    for (std::size_t k = 0; k < d; ++k) row[n + k] = e.value.empty() ? 0.0 : e.value[k];
-    rows.push_back(row);
+    for (std::size_t j = 0; j < n; ++j) a.back()[j] = test::exact_basis_derivative(knots, static_cast<int>(j), p, e.order, u);
+    b.emplace_back(d, 0);
+    for (std::size_t k = 0; k < d && !e.value.empty(); ++k) b.back()[k] = e.value[k];
   }
-  return exact_solve(rows, d);
+  return test::solve_exactly(a, b);
 }
 
 void expect_control_points_near(const BSplineCurve& curve, const std::vector<std::vector<mpq_class>>& exact,
@@ -142,15 +120,13 @@ TEST(InterpolateCubic, PeriodicMatchesItsExactCyclicSystem) {
   // The cyclic system from the definition: column j of the full knot vector
   // is control point j mod m.
   const auto knots = knots_of(*curve);
-  std::vector<std::vector<mpq_class>> rows;
+  test::RationalMatrix a, b;
   for (std::size_t i = 0; i < m; ++i) {
-    std::vector<mpq_class> row(m + 2, 0);
-    for (std::size_t j = 0; j < m + 3; ++j) row[j % m] += test::exact_basis(knots, static_cast<int>(j), 3, t[i]);
-    row[m] = kPoints[i][0];
-    row[m + 1] = kPoints[i][1];
-    rows.push_back(row);
+    a.emplace_back(m, 0);
+    for (std::size_t j = 0; j < m + 3; ++j) a.back()[j % m] += test::exact_basis(knots, static_cast<int>(j), 3, t[i]);
+    b.push_back({kPoints[i][0], kPoints[i][1]});
   }
-  const auto exact = exact_solve(rows, 2);
+  const auto exact = test::solve_exactly(a, b);
   double scale = 0;
   for (const auto& r : exact) scale = std::max({scale, std::abs(r[0].get_d()), std::abs(r[1].get_d())});
   for (std::size_t i = 0; i < m; ++i)

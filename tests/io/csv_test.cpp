@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/model.hpp"
+#include "support/examples_dir.hpp"
 #include "io_test_support.hpp"
 
 namespace casteljau {
@@ -22,7 +24,7 @@ PointArray parse(const std::string& text) {
   return points ? *points : PointArray{};
 }
 
-std::string error_of(const std::string& text) {
+std::string csv_error(const std::string& text) {
   const auto points = parse_points_csv(text, "p.csv");
   EXPECT_FALSE(points.has_value()) << text;
   return points ? std::string{} : points.error().message;
@@ -64,48 +66,48 @@ TEST(PointsCsv, AcceptsALeadingPlusAndUnderflowToZero) {
 }
 
 TEST(PointsCsv, RefusesBadFieldsNamingFileLineAndField) {
-  EXPECT_EQ(error_of("x,y\n0,0\n1,abc\n"), "p.csv, line 3, field 2: 'abc' is not a number");
-  EXPECT_EQ(error_of("# c\n\n0,0\n1,2 # note\n"), "p.csv, line 4, field 2: '2 # note' is not a number");
-  EXPECT_EQ(error_of("0,0\n1,0x10\n"), "p.csv, line 2, field 2: '0x10' is not a number");
-  EXPECT_EQ(error_of("0,0\n1,1e\n"), "p.csv, line 2, field 2: '1e' is not a number");
-  EXPECT_EQ(error_of("0,0\n++1,0\n"), "p.csv, line 2, field 1: '++1' is not a number");
-  EXPECT_EQ(error_of("0,0\n\"1\",0\n"), "p.csv, line 2, field 1: '\"1\"' is not a number");
-  EXPECT_EQ(error_of("0,0\n1,\n"), "p.csv, line 2, field 2: the value is empty, expected a number");
-  EXPECT_EQ(error_of("0,0\n , 1\n"), "p.csv, line 2, field 1: the value is empty, expected a number");
+  EXPECT_EQ(csv_error("x,y\n0,0\n1,abc\n"), "p.csv, line 3, field 2: 'abc' is not a number");
+  EXPECT_EQ(csv_error("# c\n\n0,0\n1,2 # note\n"), "p.csv, line 4, field 2: '2 # note' is not a number");
+  EXPECT_EQ(csv_error("0,0\n1,0x10\n"), "p.csv, line 2, field 2: '0x10' is not a number");
+  EXPECT_EQ(csv_error("0,0\n1,1e\n"), "p.csv, line 2, field 2: '1e' is not a number");
+  EXPECT_EQ(csv_error("0,0\n++1,0\n"), "p.csv, line 2, field 1: '++1' is not a number");
+  EXPECT_EQ(csv_error("0,0\n\"1\",0\n"), "p.csv, line 2, field 1: '\"1\"' is not a number");
+  EXPECT_EQ(csv_error("0,0\n1,\n"), "p.csv, line 2, field 2: the value is empty, expected a number");
+  EXPECT_EQ(csv_error("0,0\n , 1\n"), "p.csv, line 2, field 1: the value is empty, expected a number");
 }
 
 TEST(PointsCsv, RefusesNonFiniteValues) {
-  EXPECT_EQ(error_of("x,y\n0,nan\n"), "p.csv, line 2, field 2: 'nan' is NaN, numbers must be finite");
-  EXPECT_EQ(error_of("x,y\n-inf,0\n"), "p.csv, line 2, field 1: '-inf' is infinite, numbers must be finite");
-  EXPECT_EQ(error_of("x,y\n0,Infinity\n"), "p.csv, line 2, field 2: 'Infinity' is infinite, numbers must be finite");
-  EXPECT_EQ(error_of("x,y\n0,1e999\n"),
+  EXPECT_EQ(csv_error("x,y\n0,nan\n"), "p.csv, line 2, field 2: 'nan' is NaN, numbers must be finite");
+  EXPECT_EQ(csv_error("x,y\n-inf,0\n"), "p.csv, line 2, field 1: '-inf' is infinite, numbers must be finite");
+  EXPECT_EQ(csv_error("x,y\n0,Infinity\n"), "p.csv, line 2, field 2: 'Infinity' is infinite, numbers must be finite");
+  EXPECT_EQ(csv_error("x,y\n0,1e999\n"),
             "p.csv, line 2, field 2: '1e999' overflows to infinity, numbers must be finite");
-  EXPECT_EQ(error_of("x,y\n0,-1e999\n"),
+  EXPECT_EQ(csv_error("x,y\n0,-1e999\n"),
             "p.csv, line 2, field 2: '-1e999' overflows to infinity, numbers must be finite");
 }
 
 TEST(PointsCsv, RefusesRaggedRows) {
-  EXPECT_EQ(error_of("x,y\n0,0\n1,2,3\n"),
+  EXPECT_EQ(csv_error("x,y\n0,0\n1,2,3\n"),
             "p.csv, line 3: 3 fields, but the header on line 1 has 2 (every row must have the same number of fields)");
-  EXPECT_EQ(error_of("# c\n0,0,0\n\n1,2\n"),
+  EXPECT_EQ(csv_error("# c\n0,0,0\n\n1,2\n"),
             "p.csv, line 4: 2 fields, but the first row on line 2 has 3 (every row must have the same number of "
             "fields)");
-  EXPECT_EQ(error_of("x,y\n0\n"),
+  EXPECT_EQ(csv_error("x,y\n0\n"),
             "p.csv, line 2: 1 field, but the header on line 1 has 2 (every row must have the same number of fields)");
 }
 
 TEST(PointsCsv, RefusesMixedOrLateHeaders) {
-  EXPECT_EQ(error_of("x,1\n0,0\n"), "p.csv, line 1, field 1: 'x' is not a number");
-  EXPECT_EQ(error_of("x,y\n0,0\nx,y\n"), "p.csv, line 3, field 1: 'x' is not a number");
-  EXPECT_EQ(error_of("x,,z\n1,2,3\n"), "p.csv, line 1, field 2: empty column name in the header row");
+  EXPECT_EQ(csv_error("x,1\n0,0\n"), "p.csv, line 1, field 1: 'x' is not a number");
+  EXPECT_EQ(csv_error("x,y\n0,0\nx,y\n"), "p.csv, line 3, field 1: 'x' is not a number");
+  EXPECT_EQ(csv_error("x,,z\n1,2,3\n"), "p.csv, line 1, field 2: empty column name in the header row");
 }
 
 TEST(PointsCsv, RefusesAFileWithoutPoints) {
   const std::string message = "p.csv: no points (only comments and blank lines)";
-  EXPECT_EQ(error_of(""), message);
-  EXPECT_EQ(error_of("\n\n  \n"), message);
-  EXPECT_EQ(error_of("# only a comment\n"), message);
-  EXPECT_EQ(error_of("# c\nx,y\n# header only\n"), "p.csv: no points after the header row on line 2");
+  EXPECT_EQ(csv_error(""), message);
+  EXPECT_EQ(csv_error("\n\n  \n"), message);
+  EXPECT_EQ(csv_error("# only a comment\n"), message);
+  EXPECT_EQ(csv_error("# c\nx,y\n# header only\n"), "p.csv: no points after the header row on line 2");
 }
 
 // Separators (docs/formats.md, "Point sets"): the first row chooses ',', ';'
@@ -126,51 +128,51 @@ TEST(PointsCsv, RefusesDecimalCommasAndSaysHowToConvert) {
   const std::string hint =
       "uses ',' as the decimal mark; casteljau reads '.' as the decimal mark, and ',', ';' or tabs between values "
       "(convert with: sed 's/,/./g')";
-  EXPECT_EQ(error_of("x;y\n9,5;5\n"), "p.csv, line 2, field 1: '9,5' " + hint);
-  EXPECT_EQ(error_of("9,5;5,5\n"), "p.csv, line 1, field 1: '9,5' " + hint);  // not a header
-  EXPECT_EQ(error_of("9;5\n5;-0,5\n"), "p.csv, line 2, field 2: '-0,5' " + hint);
-  EXPECT_EQ(error_of("x\ty\n9,5\t5\n"), "p.csv, line 2, field 1: '9,5' " + hint);
-  EXPECT_EQ(error_of("9,5\t5\n"), "p.csv, line 1, field 1: '9,5' " + hint);
+  EXPECT_EQ(csv_error("x;y\n9,5;5\n"), "p.csv, line 2, field 1: '9,5' " + hint);
+  EXPECT_EQ(csv_error("9,5;5,5\n"), "p.csv, line 1, field 1: '9,5' " + hint);  // not a header
+  EXPECT_EQ(csv_error("9;5\n5;-0,5\n"), "p.csv, line 2, field 2: '-0,5' " + hint);
+  EXPECT_EQ(csv_error("x\ty\n9,5\t5\n"), "p.csv, line 2, field 1: '9,5' " + hint);
+  EXPECT_EQ(csv_error("9,5\t5\n"), "p.csv, line 1, field 1: '9,5' " + hint);
   // What the hint's command makes of them reads.
   EXPECT_EQ(parse("x;y\n9.5;5\n"), points(2, {9.5, 5}));
   // Not a decimal comma: two commas, or a comma and a point.
-  EXPECT_EQ(error_of("x;y\n1,000,5;5\n"), "p.csv, line 2, field 1: '1,000,5' is not a number");
-  EXPECT_EQ(error_of("x;y\n1,000.5;5\n"), "p.csv, line 2, field 1: '1,000.5' is not a number");
+  EXPECT_EQ(csv_error("x;y\n1,000,5;5\n"), "p.csv, line 2, field 1: '1,000,5' is not a number");
+  EXPECT_EQ(csv_error("x;y\n1,000.5;5\n"), "p.csv, line 2, field 1: '1,000.5' is not a number");
 }
 
 TEST(PointsCsv, RefusesRowsWithAnotherSeparatorThanTheFirstRow) {
-  EXPECT_EQ(error_of("x,y\n9.5;5\n"),
+  EXPECT_EQ(csv_error("x,y\n9.5;5\n"),
             "p.csv, line 2: 1 field, but the header on line 1 has 2 (every row must have the same number of "
             "fields); line 1 separates values by ',', this line has ';'");
-  EXPECT_EQ(error_of("x;y\n9.5,5\n"),
+  EXPECT_EQ(csv_error("x;y\n9.5,5\n"),
             "p.csv, line 2: 1 field, but the header on line 1 has 2 (every row must have the same number of "
             "fields); line 1 separates values by ';', this line has ','");
-  EXPECT_EQ(error_of("0,0\n9.5\t5\n"),
+  EXPECT_EQ(csv_error("0,0\n9.5\t5\n"),
             "p.csv, line 2: 1 field, but the first row on line 1 has 2 (every row must have the same number of "
             "fields); line 1 separates values by ',', this line has tabs");
-  EXPECT_EQ(error_of("x,y\n9,5;5\n"),
+  EXPECT_EQ(csv_error("x,y\n9,5;5\n"),
             "p.csv, line 2, field 2: '5;5' is not a number; values are separated by ',' on line 1, and this line has "
             "';' (one separator for the whole file: ',', ';' or tabs)");
 }
 
 TEST(PointsCsv, RefusesSpaceSeparatedNumbersWithAHint) {
-  EXPECT_EQ(error_of("9.5 5\n5.5 5\n"),
+  EXPECT_EQ(csv_error("9.5 5\n5.5 5\n"),
             "p.csv, line 1, field 1: '9.5 5' holds numbers separated by spaces; casteljau reads ',', ';' or tabs "
             "between values (convert with: sed -E 's/ +/,/g')");
-  EXPECT_EQ(error_of("x,y\n1 2,3\n"),
+  EXPECT_EQ(csv_error("x,y\n1 2,3\n"),
             "p.csv, line 2, field 1: '1 2' holds numbers separated by spaces; casteljau reads ',', ';' or tabs "
             "between values (convert with: sed -E 's/ +/,/g')");
-  EXPECT_EQ(error_of("x,y\n1 a,3\n"), "p.csv, line 2, field 1: '1 a' is not a number");
+  EXPECT_EQ(csv_error("x,y\n1 a,3\n"), "p.csv, line 2, field 1: '1 a' is not a number");
 }
 
 TEST(PointsCsv, MessagesStayOnOneLineAndShort) {
   // A stray carriage return and a control character inside a field, and a
   // huge field: the message escapes them and is cut.
-  EXPECT_EQ(error_of("0,0\n1,2\r3\n"), "p.csv, line 2, field 2: '2\\x0d3' is not a number");
+  EXPECT_EQ(csv_error("0,0\n1,2\r3\n"), "p.csv, line 2, field 2: '2\\x0d3' is not a number");
   // Bytes that are not UTF-8 are escaped too; UTF-8 text is kept.
-  EXPECT_EQ(error_of("0,0\n1,\xff\xc3\n"), "p.csv, line 2, field 2: '\\xff\\xc3' is not a number");
-  EXPECT_EQ(error_of("0,0\n1,\xc3\xa9t\xc3\xa9\n"), "p.csv, line 2, field 2: '\xc3\xa9t\xc3\xa9' is not a number");
-  const std::string message = error_of("0,0\n1," + std::string(100000, 'a') + "\n");
+  EXPECT_EQ(csv_error("0,0\n1,\xff\xc3\n"), "p.csv, line 2, field 2: '\\xff\\xc3' is not a number");
+  EXPECT_EQ(csv_error("0,0\n1,\xc3\xa9t\xc3\xa9\n"), "p.csv, line 2, field 2: '\xc3\xa9t\xc3\xa9' is not a number");
+  const std::string message = csv_error("0,0\n1," + std::string(100000, 'a') + "\n");
   EXPECT_EQ(message.find('\n'), std::string::npos);
   EXPECT_LT(message.size(), 200u);
 }
@@ -179,7 +181,7 @@ TEST(PointsCsv, RefusesMoreThanTheLimitOfPoints) {
   std::string text;
   text.reserve(2 * (tolerances::kMaxControlPoints + 1));
   for (std::size_t i = 0; i <= tolerances::kMaxControlPoints; ++i) text += "0\n";
-  EXPECT_EQ(error_of(text), "p.csv, line 10000001: more than 10000000 points, the limit for one file");
+  EXPECT_EQ(csv_error(text), "p.csv, line 10000001: more than 10000000 points, the limit for one file");
   text.resize(text.size() - 2);  // exactly the limit is accepted
   EXPECT_EQ(parse_points_csv(text, "p.csv").value().size(), tolerances::kMaxControlPoints);
 }
@@ -187,7 +189,7 @@ TEST(PointsCsv, RefusesMoreThanTheLimitOfPoints) {
 TEST(PointsCsv, RefusesAHugeRowWithoutStoringIt) {
   // 50,000,001 empty fields in one row: refused from the comma count alone.
   const std::string text(tolerances::kMaxInputValues, ',');
-  EXPECT_EQ(error_of(text), "p.csv, line 1: more than 50000000 numbers, the limit for one file");
+  EXPECT_EQ(csv_error(text), "p.csv, line 1: more than 50000000 numbers, the limit for one file");
 }
 
 TEST(PointsCsv, FormatsShortestRoundTripOnePointPerLine) {
@@ -248,7 +250,7 @@ TEST(NumbersCsv, RefusesSeveralColumnsTooManyValuesAndBadFields) {
 }
 
 TEST(PointsCsvFiles, ReadTheExamplesAndNameTheFileInErrors) {
-  const std::string examples = CASTELJAU_EXAMPLES_DIR;
+  const std::string examples = test::examples_dir().string();
   const auto head = read_points_csv(examples + "/head.csv");
   ASSERT_TRUE(head.has_value()) << head.error().message;
   EXPECT_EQ(head->size(), 19u);  // seed 000, Figure 3

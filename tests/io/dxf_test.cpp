@@ -31,7 +31,7 @@ std::string dxf(const std::string& entities, const std::string& header = "") {
          "0\nENDSEC\n0\nEOF\n";
 }
 
-DxfDrawing read_valid(const std::string& text) {
+DxfDrawing read_dxf(const std::string& text) {
   auto drawing = parse_dxf_drawing(text, "t.dxf");
   EXPECT_TRUE(drawing.has_value()) << drawing.error().message;
   if (!drawing) return {};
@@ -45,21 +45,21 @@ void expect_point(const Point& p, std::vector<double> expected, double tolerance
 }
 
 TEST(DxfRead, LinesInThePlaneAndInSpace) {
-  const auto plane = read_valid(dxf("0\nLINE\n5\n1F\n8\nparts\n10\n1\n20\n2\n11\n4\n21\n6\n"));
+  const auto plane = read_dxf(dxf("0\nLINE\n5\n1F\n8\nparts\n10\n1\n20\n2\n11\n4\n21\n6\n"));
   ASSERT_EQ(plane.curves.size(), 1u);
   EXPECT_EQ(plane.curves[0].entity, "LINE");
   EXPECT_EQ(plane.curves[0].handle, "1F");
   EXPECT_EQ(plane.curves[0].layer, "parts");
   EXPECT_EQ(dimension_of(plane.curves[0].curve), 2);  // every z is 0
   expect_point(point_at(curve_view(plane.curves[0].curve), 0.5), {2.5, 4});
-  const auto space = read_valid(dxf("0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n0\nLINE\n10\n0\n20\n0\n30\n1\n11\n1\n21\n0\n"));
+  const auto space = read_dxf(dxf("0\nLINE\n10\n0\n20\n0\n11\n1\n21\n1\n0\nLINE\n10\n0\n20\n0\n30\n1\n11\n1\n21\n0\n"));
   ASSERT_EQ(space.curves.size(), 2u);
   EXPECT_EQ(dimension_of(space.curves[0].curve), 3);  // one z is not 0: all in R^3
 }
 
 TEST(DxfRead, ArcsRunCounterClockwiseFromStartToEndAngle) {
   // Centre (1, 2), radius 2, from 90 to 180 degrees: (1, 4) to (-1, 2).
-  const auto drawing = read_valid(dxf("0\nARC\n10\n1\n20\n2\n40\n2\n50\n90\n51\n180\n"
+  const auto drawing = read_dxf(dxf("0\nARC\n10\n1\n20\n2\n40\n2\n50\n90\n51\n180\n"
                                       "0\nARC\n10\n0\n20\n0\n40\n1\n50\n270\n51\n45\n"));
   ASSERT_EQ(drawing.curves.size(), 2u);
   const CurveView quarter = curve_view(drawing.curves[0].curve);
@@ -75,7 +75,7 @@ TEST(DxfRead, ArcsRunCounterClockwiseFromStartToEndAngle) {
 
 TEST(DxfRead, ExtrusionDownwardsMirrorsX) {
   // Arbitrary axis algorithm for N = (0, 0, -1): Ax = (-1, 0, 0), Ay = (0, 1, 0).
-  const auto drawing = read_valid(dxf("0\nCIRCLE\n10\n3\n20\n0\n40\n1\n210\n0\n220\n0\n230\n-1\n"));
+  const auto drawing = read_dxf(dxf("0\nCIRCLE\n10\n3\n20\n0\n40\n1\n210\n0\n220\n0\n230\n-1\n"));
   const CurveView circle = curve_view(drawing.curves.at(0).curve);
   expect_point(point_at(circle, 0.0), {-4, 0});  // OCS (3 + 1, 0) is WCS (-4, 0)
   const Point quarter = point_at(circle, 0.25);
@@ -84,7 +84,7 @@ TEST(DxfRead, ExtrusionDownwardsMirrorsX) {
 
 TEST(DxfRead, EllipsesAndTheirArcs) {
   // Centre (0, 0), major axis (4, 0), ratio 0.5: minor axis (0, 2); from 0 to π/2.
-  const auto drawing = read_valid(dxf(fmt::format("0\nELLIPSE\n10\n0\n20\n0\n11\n4\n21\n0\n40\n0.5\n41\n0\n42\n{}\n",
+  const auto drawing = read_dxf(dxf(fmt::format("0\nELLIPSE\n10\n0\n20\n0\n11\n4\n21\n0\n40\n0.5\n41\n0\n42\n{}\n",
                                                   std::numbers::pi / 2)));
   const CurveView arc = curve_view(drawing.curves.at(0).curve);
   expect_point(point_at(arc, 0.0), {4, 0});
@@ -99,7 +99,7 @@ TEST(DxfRead, PolylineBulgesAreExactArcs) {
   // Bulge 1 from (0, 0) to (2, 0): a half circle of radius 1 about (1, 0),
   // counter-clockwise, so through (1, -1); then a line back, closed.
   const auto drawing =
-      read_valid(dxf("0\nLWPOLYLINE\n90\n2\n70\n1\n10\n0\n20\n0\n42\n1\n10\n2\n20\n0\n"));
+      read_dxf(dxf("0\nLWPOLYLINE\n90\n2\n70\n1\n10\n0\n20\n0\n42\n1\n10\n2\n20\n0\n"));
   const auto& curve = std::get<PiecewiseBezierCurve>(drawing.curves.at(0).curve);
   const CurveView view(curve);
   expect_point(point_at(view, 0.0), {0, 0});
@@ -116,7 +116,7 @@ TEST(DxfRead, PolylineBulgesAreExactArcs) {
   EXPECT_NEAR(lowest, -1.0, 1e-3);
   expect_point(point_at(view, domain.upper), {0, 0});  // closed: back to the first vertex
   // The old POLYLINE with VERTEX entities, the same half circle, and a 3D one.
-  const auto old = read_valid(dxf("0\nPOLYLINE\n66\n1\n10\n0\n20\n0\n30\n0\n0\nVERTEX\n10\n0\n20\n0\n42\n1\n"
+  const auto old = read_dxf(dxf("0\nPOLYLINE\n66\n1\n10\n0\n20\n0\n30\n0\n0\nVERTEX\n10\n0\n20\n0\n42\n1\n"
                                   "0\nVERTEX\n10\n2\n20\n0\n0\nSEQEND\n"
                                   "0\nPOLYLINE\n66\n1\n70\n8\n0\nVERTEX\n10\n0\n20\n0\n30\n1\n70\n32\n"
                                   "0\nVERTEX\n10\n1\n20\n1\n30\n2\n70\n32\n0\nSEQEND\n"));
@@ -132,12 +132,12 @@ TEST(DxfRead, SplinesWithControlPointsKnotsAndWeights) {
   for (double w : circle.weights()) entity += fmt::format("41\n{}\n", w);
   for (std::size_t i = 0; i < circle.control_points().size(); ++i)
     entity += fmt::format("10\n{}\n20\n{}\n30\n0\n", circle.control_points()[i][0], circle.control_points()[i][1]);
-  const auto drawing = read_valid(dxf(entity));
+  const auto drawing = read_dxf(dxf(entity));
   EXPECT_EQ(std::get<BSplineCurve>(drawing.curves.at(0).curve), circle);  // exactly the curve written
 }
 
 TEST(DxfRead, SplinesWithFitPointsOnlyPassThroughThem) {
-  const auto drawing = read_valid(dxf("0\nSPLINE\n71\n3\n74\n5\n11\n0\n21\n0\n11\n1\n21\n2\n11\n3\n21\n3\n"
+  const auto drawing = read_dxf(dxf("0\nSPLINE\n71\n3\n74\n5\n11\n0\n21\n0\n11\n1\n21\n2\n11\n3\n21\n3\n"
                                       "11\n5\n21\n1\n11\n6\n21\n-1\n"));
   const auto& spline = std::get<BSplineCurve>(drawing.curves.at(0).curve);
   expect_point(point_at(spline, spline.knots().front()), {0, 0});
@@ -145,7 +145,7 @@ TEST(DxfRead, SplinesWithFitPointsOnlyPassThroughThem) {
 }
 
 TEST(DxfRead, HeaderUnitsAndSkippedEntities) {
-  const auto drawing = read_valid(dxf("0\nTEXT\n1\nhello\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n",
+  const auto drawing = read_dxf(dxf("0\nTEXT\n1\nhello\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n",
                                       "9\n$ACADVER\n1\nAC1015\n9\n$INSUNITS\n70\n4\n"));
   EXPECT_EQ(drawing.insunits, 4);
   ASSERT_EQ(drawing.skipped.size(), 1u);
@@ -181,7 +181,7 @@ TEST(DxfWrite, RoundTripsTheSameDoubles) {
                             BezierCurve::make(PointArray::make(2, {0, 0, 1, 1, 2, 0, 3, 1}).value()).value()};
   const std::string text = write_dxf_drawing(models, 4).value();
   EXPECT_NE(text.find("AC1015"), std::string::npos);
-  const auto back = read_valid(text);
+  const auto back = read_dxf(text);
   EXPECT_EQ(back.insunits, 4);
   ASSERT_EQ(back.curves.size(), 3u);
   // The drawing holds a 3D curve, so all read back in R^3; the plane ones with z = 0.
@@ -193,7 +193,7 @@ TEST(DxfWrite, RoundTripsTheSameDoubles) {
     EXPECT_EQ(circle.control_points()[i][2], 0.0);
   }
   const std::vector<Model> plane{models[0], models[2]};
-  const auto flat = read_valid(write_dxf_drawing(plane).value());
+  const auto flat = read_dxf(write_dxf_drawing(plane).value());
   EXPECT_EQ(to_json(flat.curves[0].curve), to_json(models[0]));
   EXPECT_EQ(to_json(flat.curves[1].curve), to_json(to_bspline(models[2]).value()));
 }

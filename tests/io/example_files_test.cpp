@@ -15,11 +15,12 @@
 #include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/surfaces/revolution.hpp"
+#include "support/examples_dir.hpp"
 
 namespace casteljau {
 namespace {
 
-const std::filesystem::path kExamples = CASTELJAU_EXAMPLES_DIR;
+const std::filesystem::path kExamples = test::examples_dir();
 
 Model only_model(const std::string& name) {
   auto models = read_models(kExamples / name);

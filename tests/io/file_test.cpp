@@ -3,6 +3,7 @@
 // never replaces a FIFO or a device by a regular file; symbolic links
 // followed to their target; file identity; extensions.
 #include "casteljau/io/file.hpp"
+#include "casteljau/io/tolerance.hpp"
 
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -1,8 +1,10 @@
 #pragma once
 // Helpers shared by the io tests: a private temporary folder, file writing,
 // arbitrary finite doubles (every bit pattern, not a grid), bitwise equality,
-// and the message of a make() that refuses (what a reader must pass on).
+// the message of a make() that refuses (what a reader must pass on), and
+// model JSON texts read or refused.
 
+#include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <stdlib.h>
 
@@ -17,6 +19,8 @@
 
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/model_numbers.hpp"
+#include "casteljau/io/model.hpp"
+#include "casteljau/io/model_json.hpp"
 
 namespace casteljau::test {
 
@@ -106,6 +110,26 @@ inline rc::Gen<double> any_model_weight() {
 template <class T>
 std::string refusal(const Expected<T>& made) {
   return made ? std::string("accepted") : made.error().message;
+}
+
+/// The one model of a model JSON text; a test failure (and a one-point curve)
+/// when the text is refused or holds another number of models.
+inline Model parse_one_model(const std::string& text) {
+  auto models = parse_models_json(text, "m.json");
+  EXPECT_TRUE(models.has_value()) << (models ? "" : models.error().message);
+  if (!models || models->size() != 1) {
+    ADD_FAILURE() << "expected one model: " << text;
+    return Model{BezierCurve::make(PointArray::from_trusted(1, {0})).value()};
+  }
+  return models->front();
+}
+
+/// The message with which a model JSON text is refused; a test failure (and
+/// "") when it is read.
+inline std::string json_error(const std::string& text) {
+  const auto models = parse_models_json(text, "m.json");
+  EXPECT_FALSE(models.has_value()) << text;
+  return models ? std::string{} : models.error().message;
 }
 
 }  // namespace casteljau::test

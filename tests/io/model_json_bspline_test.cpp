@@ -18,20 +18,15 @@
 namespace casteljau {
 namespace {
 
-BSplineCurve parse_one(const std::string& text) {
-  auto models = parse_models_json(text, "m.json");
-  EXPECT_TRUE(models.has_value()) << (models ? "" : models.error().message);
-  if (!models || models->size() != 1 || !std::holds_alternative<BSplineCurve>(models->front())) {
-    ADD_FAILURE() << "expected one bspline model: " << text;
+using test::json_error;
+
+BSplineCurve parse_bspline(const std::string& text) {
+  const Model model = test::parse_one_model(text);
+  if (!std::holds_alternative<BSplineCurve>(model)) {
+    ADD_FAILURE() << "expected a bspline model: " << text;
     return BSplineCurve::from_trusted(0, {0, 1}, PointArray::from_trusted(1, {0}));
   }
-  return std::get<BSplineCurve>(models->front());
-}
-
-std::string error_of(const std::string& text) {
-  const auto models = parse_models_json(text, "m.json");
-  EXPECT_FALSE(models.has_value()) << text;
-  return models ? std::string{} : models.error().message;
+  return std::get<BSplineCurve>(model);
 }
 
 BSplineCurve make(int p, std::vector<double> knots, int d, std::vector<double> c, std::vector<double> w = {}) {
@@ -39,7 +34,7 @@ BSplineCurve make(int p, std::vector<double> knots, int d, std::vector<double> c
 }
 
 TEST(ModelJsonBSpline, ReadsTheInterfaceExample) {
-  const auto curve = parse_one(
+  const auto curve = parse_bspline(
       R"({"type": "bspline", "degree": 3, "knots": [0,0,0,0,1,2,2,2,2],
           "control_points": [[0,0],[1,2],[2,2],[4,1],[4,0]]})");
   EXPECT_EQ(curve, make(3, {0, 0, 0, 0, 1, 2, 2, 2, 2}, 2, {0, 0, 1, 2, 2, 2, 4, 1, 4, 0}));
@@ -49,7 +44,7 @@ TEST(ModelJsonBSpline, ReadsTheInterfaceExample) {
 }
 
 TEST(ModelJsonBSpline, ReadsANurbsCurveInAnyFieldOrderAndDegreeWrittenAsAFloat) {
-  const auto curve = parse_one(
+  const auto curve = parse_bspline(
       R"({"weights": [1, 0.7071067811865476, 1], "control_points": [[1,0,5],[1,1,5],[0,1,5]],
           "knots": [0,0,0,1,1,1], "degree": 2.0, "type": "bspline"})");
   EXPECT_EQ(curve, make(2, {0, 0, 0, 1, 1, 1}, 3, {1, 0, 5, 1, 1, 5, 0, 1, 5}, {1, 0.7071067811865476, 1}));
@@ -59,10 +54,10 @@ TEST(ModelJsonBSpline, ReadsANurbsCurveInAnyFieldOrderAndDegreeWrittenAsAFloat) 
 TEST(ModelJsonBSpline, AcceptsTheRhinoKnotCountAndConvertsIt) {
   // openNURBS stores n + p - 1 knots (the outermost two dropped): 8 for six
   // control points of degree 3 instead of 10.
-  const auto rhino = parse_one(
+  const auto rhino = parse_bspline(
       R"({"type": "bspline", "degree": 3, "knots": [0,0,0,1,2,3,3,3],
           "control_points": [[0,0],[1,2],[2,2],[3,1],[4,0],[5,1]]})");
-  const auto full = parse_one(
+  const auto full = parse_bspline(
       R"({"type": "bspline", "degree": 3, "knots": [0,0,0,0,1,2,3,3,3,3],
           "control_points": [[0,0],[1,2],[2,2],[3,1],[4,0],[5,1]]})");
   EXPECT_EQ(rhino, full);
@@ -73,41 +68,41 @@ TEST(ModelJsonBSpline, AcceptsTheRhinoKnotCountAndConvertsIt) {
 TEST(ModelJsonBSpline, EveryBadFieldIsNamed) {
   const std::string points = R"("control_points": [[0,0],[1,2],[2,2],[4,1]])";
   const auto with = [&](const std::string& fields) { return R"({"type": "bspline", )" + fields + "}"; };
-  EXPECT_EQ(error_of(with(R"("knots": [0,0,0,0,1,1,1,1], )" + points)), "m.json, the top level: missing field 'degree'");
-  EXPECT_EQ(error_of(with(R"("degree": 3, )" + points)), "m.json, the top level: missing field 'knots'");
-  EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1])")),
+  EXPECT_EQ(json_error(with(R"("knots": [0,0,0,0,1,1,1,1], )" + points)), "m.json, the top level: missing field 'degree'");
+  EXPECT_EQ(json_error(with(R"("degree": 3, )" + points)), "m.json, the top level: missing field 'knots'");
+  EXPECT_EQ(json_error(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1])")),
             "m.json, the top level: missing field 'control_points'");
-  EXPECT_EQ(error_of(with(R"("degree": "3", "knots": [0,0,0,0,1,1,1,1], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": "3", "knots": [0,0,0,0,1,1,1,1], )" + points)),
             "m.json, degree: expected a whole number, found the string '3'");
-  EXPECT_EQ(error_of(with(R"("degree": 2.5, "knots": [0,0,0,0,1,1,1,1], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 2.5, "knots": [0,0,0,0,1,1,1,1], )" + points)),
             "m.json, degree: expected a whole number, found the number 2.5");
-  EXPECT_EQ(error_of(with(R"("degree": 1e10, "knots": [0,0,0,0,1,1,1,1], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 1e10, "knots": [0,0,0,0,1,1,1,1], )" + points)),
             "m.json, degree: expected a whole number, found the number 10000000000, beyond the range of an int");
   // The values are make()'s to judge: its words, at the field's path.
   const auto four = PointArray::make(2, {0, 0, 1, 2, 2, 2, 4, 1}).value();
   const std::vector<double> clamped{0, 0, 0, 0, 1, 1, 1, 1};
-  EXPECT_EQ(error_of(with(R"("degree": -1, "knots": [0,0,0,0,1,1,1,1], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": -1, "knots": [0,0,0,0,1,1,1,1], )" + points)),
             "m.json, degree: " + test::refusal(BSplineCurve::make(-1, clamped, four)));
-  EXPECT_EQ(error_of(with(R"("degree": 4, "knots": [0,0,0,0,1,1,1,1], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 4, "knots": [0,0,0,0,1,1,1,1], )" + points)),
             "m.json, control_points: " + test::refusal(BSplineCurve::make(4, clamped, four)));
   // A count that fits neither convention: make()'s words and the other count.
-  EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1], )" + points)),
             "m.json, knots: " + test::refusal(BSplineCurve::make(3, {0, 0, 0, 0, 1, 1, 1}, four)) +
                 "; model JSON also reads 6 knots (control points + degree - 1, the Rhino/openNURBS convention)");
-  EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,0.5,1,1], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 3, "knots": [0,0,0,0,1,0.5,1,1], )" + points)),
             "m.json, knots: " + test::refusal(BSplineCurve::make(3, {0, 0, 0, 0, 1, 0.5, 1, 1}, four)));
-  EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,"x"], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,"x"], )" + points)),
             "m.json, knots[7]: expected a number, found the string 'x'");
-  EXPECT_EQ(error_of(with(R"("degree": 3, "knots": {"a": 1}, )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 3, "knots": {"a": 1}, )" + points)),
             "m.json, knots: expected an array of numbers, found an object");
-  EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "weights": [1,1,0,1], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "weights": [1,1,0,1], )" + points)),
             "m.json, weights: " + test::refusal(BSplineCurve::make(3, clamped, four, {1, 1, 0, 1})));
-  EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "weights": [1,1,1], )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "weights": [1,1,1], )" + points)),
             "m.json, weights: " + test::refusal(BSplineCurve::make(3, clamped, four, {1, 1, 1})));
-  EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "closed": true, )" + points)),
+  EXPECT_EQ(json_error(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "closed": true, )" + points)),
             "m.json, the top level: unknown field 'closed' (a bspline model has the fields type, degree, knots, "
             "control_points, weights)");
-  EXPECT_EQ(error_of(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "control_points": [[0,0],[1,2],[2],[4,1]])")),
+  EXPECT_EQ(json_error(with(R"("degree": 3, "knots": [0,0,0,0,1,1,1,1], "control_points": [[0,0],[1,2],[2],[4,1]])")),
             "m.json, control_points[2]: 1 coordinate, but control_points[0] has 2 (all points must have the same "
             "dimension)");
 }
@@ -115,15 +110,15 @@ TEST(ModelJsonBSpline, EveryBadFieldIsNamed) {
 TEST(ModelJsonBSpline, KnotErrorsFromTheValidatorKeepItsWords) {
   // Each message comes from validate_knots / knots_from_rhino behind the
   // field path; the test pins the path and the index, not the wording.
-  const auto message = error_of(
+  const auto message = json_error(
       R"({"models": [{"type": "bezier", "control_points": [[0]]},
                      {"type": "bspline", "degree": 1, "knots": [0,1,1,1,1], "control_points": [[0],[1],[2]]}]})");
   EXPECT_EQ(message.rfind("m.json, models[1].knots: ", 0), 0u) << message;
   EXPECT_NE(message.find("knot"), std::string::npos) << message;
   const auto empty_domain =
-      error_of(R"({"type": "bspline", "degree": 1, "knots": [0,0,0,0], "control_points": [[0],[1]]})");
+      json_error(R"({"type": "bspline", "degree": 1, "knots": [0,0,0,0], "control_points": [[0],[1]]})");
   EXPECT_EQ(empty_domain.rfind("m.json, knots: ", 0), 0u) << empty_domain;
-  const auto rhino = error_of(R"({"type": "bspline", "degree": 2, "knots": [0,2,1], "control_points": [[0],[1],[2]]})");
+  const auto rhino = json_error(R"({"type": "bspline", "degree": 2, "knots": [0,2,1], "control_points": [[0],[1],[2]]})");
   EXPECT_EQ(rhino.rfind("m.json, knots: ", 0), 0u) << rhino;
   EXPECT_NE(rhino.find("Rhino/openNURBS"), std::string::npos) << rhino;
 }

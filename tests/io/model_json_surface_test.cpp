@@ -18,21 +18,8 @@
 namespace casteljau {
 namespace {
 
-Model parse_one(const std::string& text) {
-  auto models = parse_models_json(text, "m.json");
-  EXPECT_TRUE(models.has_value()) << (models ? "" : models.error().message);
-  if (!models || models->size() != 1) {
-    ADD_FAILURE() << "expected one model: " << text;
-    return Model{BezierCurve::make(PointArray::from_trusted(1, {0})).value()};
-  }
-  return models->front();
-}
-
-std::string error_of(const std::string& text) {
-  const auto models = parse_models_json(text, "m.json");
-  EXPECT_FALSE(models.has_value()) << text;
-  return models ? std::string{} : models.error().message;
-}
+using test::json_error;
+using test::parse_one_model;
 
 ControlNet net(std::size_t rows, std::size_t columns, int d, std::vector<double> coordinates) {
   return ControlNet::make(rows, columns, PointArray::make(d, std::move(coordinates)).value()).value();
@@ -43,7 +30,7 @@ const char* kBezierSurface =
     R"({"type": "bezier_surface", "control_points": [[[0,0,0],[0,1,1],[0,2,0]], [[1,0,1],[1,1,2],[1,2,1]]]})";
 
 TEST(ModelJsonSurface, ReadsABezierSurfaceRowByRowWithIAlongU) {
-  const Model model = parse_one(kBezierSurface);
+  const Model model = parse_one_model(kBezierSurface);
   ASSERT_TRUE(std::holds_alternative<BezierSurface>(model));
   const auto& surface = std::get<BezierSurface>(model);
   EXPECT_EQ(surface.control_net(), net(2, 3, 3, {0, 0, 0, 0, 1, 1, 0, 2, 0, 1, 0, 1, 1, 1, 2, 1, 2, 1}));
@@ -63,7 +50,7 @@ TEST(ModelJsonSurface, ReadsABezierSurfaceRowByRowWithIAlongU) {
 }
 
 TEST(ModelJsonSurface, ReadsARationalBezierSurface) {
-  const Model model = parse_one(
+  const Model model = parse_one_model(
       R"({"type": "bezier_surface", "control_points": [[[0,0],[1,0]], [[0,1],[1,1]]], "weights": [[1, 2], [3, 0.5]]})");
   const auto& surface = std::get<BezierSurface>(model);
   EXPECT_TRUE(surface.is_rational());
@@ -72,7 +59,7 @@ TEST(ModelJsonSurface, ReadsARationalBezierSurface) {
 }
 
 TEST(ModelJsonSurface, ReadsABSplineSurfaceWithKnotsPerDirection) {
-  const Model model = parse_one(
+  const Model model = parse_one_model(
       R"({"type": "bspline_surface", "degree": [2, 1], "knots": [[0,0,0,1,1,1], [0,0,0.5,3,3]],
           "control_points": [[[0,0,0],[0,1,0],[0,2,0]], [[1,0,1],[1,1,1],[1,2,1]], [[2,0,0],[2,1,0],[2,2,0]]],
           "weights": [[1,1,1],[0.5,0.5,0.5],[1,1,1]]})");
@@ -91,10 +78,10 @@ TEST(ModelJsonSurface, ReadsABSplineSurfaceWithKnotsPerDirection) {
 
 TEST(ModelJsonSurface, AcceptsTheRhinoKnotCountInEachDirection) {
   // 4 points of degree 3 along u: 8 knots in full, 6 in the openNURBS form.
-  const Model rhino = parse_one(
+  const Model rhino = parse_one_model(
       R"({"type": "bspline_surface", "degree": [3, 1], "knots": [[0,0,0,1,1,1], [0,1]],
           "control_points": [[[0],[1]], [[2],[3]], [[4],[5]], [[6],[7]]]})");
-  const Model full = parse_one(
+  const Model full = parse_one_model(
       R"({"type": "bspline_surface", "degree": [3, 1], "knots": [[0,0,0,0,1,1,1,1], [0,0,1,1]],
           "control_points": [[[0],[1]], [[2],[3]], [[4],[5]], [[6],[7]]]})");
   EXPECT_EQ(rhino, full);
@@ -111,7 +98,7 @@ const char* kCoons = R"({"type": "coons", "blending": "cubic", "boundaries": {
     "v1": {"type": "bezier", "control_points": [[0,1,0],[1,1,0]]}}})";
 
 TEST(ModelJsonSurface, ReadsACoonsPatchFromFourCurvesOfAnyKind) {
-  const Model model = parse_one(kCoons);
+  const Model model = parse_one_model(kCoons);
   ASSERT_TRUE(std::holds_alternative<CoonsPatch>(model));
   const auto& patch = std::get<CoonsPatch>(model);
   EXPECT_EQ(patch.blending(), CoonsBlending::cubic);
@@ -133,7 +120,7 @@ TEST(ModelJsonSurface, ReadsACoonsPatchFromFourCurvesOfAnyKind) {
 }
 
 TEST(ModelJsonSurface, CoonsBlendingDefaultsToLinear) {
-  const Model model = parse_one(R"({"type": "coons", "boundaries": {
+  const Model model = parse_one_model(R"({"type": "coons", "boundaries": {
       "u0": {"type": "bezier", "control_points": [[0,0],[0,1]]},
       "u1": {"type": "bezier", "control_points": [[1,0],[1,1]]},
       "v0": {"type": "bezier", "control_points": [[0,0],[1,0]]},
@@ -142,13 +129,13 @@ TEST(ModelJsonSurface, CoonsBlendingDefaultsToLinear) {
 }
 
 TEST(ModelJsonSurface, WritesTheExactText) {
-  EXPECT_EQ(to_json(parse_one(kBezierSurface)),
+  EXPECT_EQ(to_json(parse_one_model(kBezierSurface)),
             R"({"type":"bezier_surface","control_points":[[[0,0,0],[0,1,1],[0,2,0]],[[1,0,1],[1,1,2],[1,2,1]]]})");
-  EXPECT_EQ(to_json(parse_one(R"({"type":"bspline_surface","degree":[1,1],"knots":[[0,0,1,1],[0,0,1,1]],
+  EXPECT_EQ(to_json(parse_one_model(R"({"type":"bspline_surface","degree":[1,1],"knots":[[0,0,1,1],[0,0,1,1]],
                                   "control_points":[[[0],[1]],[[2],[3]]],"weights":[[1,2],[3,4]]})")),
             R"({"type":"bspline_surface","degree":[1,1],"knots":[[0,0,1,1],[0,0,1,1]],)"
             R"("control_points":[[[0],[1]],[[2],[3]]],"weights":[[1,2],[3,4]]})");
-  const std::string coons = to_json(parse_one(R"({"type": "coons", "boundaries": {
+  const std::string coons = to_json(parse_one_model(R"({"type": "coons", "boundaries": {
       "u0": {"type": "bezier", "control_points": [[0,0],[0,1]]},
       "u1": {"type": "bezier", "control_points": [[1,0],[1,1]]},
       "v0": {"type": "bezier", "control_points": [[0,0],[1,0]]},
@@ -161,10 +148,10 @@ TEST(ModelJsonSurface, WritesTheExactText) {
 }
 
 TEST(ModelJsonSurface, RoundTripsTheCoonsPatchFromCurvesOfEveryKind) {
-  const Model model = parse_one(kCoons);
-  EXPECT_EQ(parse_one(to_json(model)), model);
+  const Model model = parse_one_model(kCoons);
+  EXPECT_EQ(parse_one_model(to_json(model)), model);
   // And several models in one file, surfaces and curves mixed.
-  const std::vector<Model> models{model, parse_one(kBezierSurface),
+  const std::vector<Model> models{model, parse_one_model(kBezierSurface),
                                   Model{BezierCurve::make(PointArray::from_trusted(2, {0, 0, 1, 1})).value()}};
   const auto again = parse_models_json(models_to_json(models), "m.json");
   ASSERT_TRUE(again.has_value());
@@ -234,96 +221,96 @@ RC_GTEST_PROP(ModelJsonSurface, BSplineSurfacesRoundTripExactly, ()) {
 // --- refusals, each naming its path ---------------------------------------
 
 TEST(ModelJsonSurface, RefusesARaggedNet) {
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[[0,0],[1,0],[2,0],[3,0]],
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": [[[0,0],[1,0],[2,0],[3,0]],
       [[0,1],[1,1],[2,1],[3,1]], [[0,2],[1,2],[2,2]]]})"),
             "m.json, control_points[2]: row 2 has 3 points, row 0 has 4 (a control net is rectangular)");
-  EXPECT_EQ(error_of(R"({"models": [{"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,1,1]],
+  EXPECT_EQ(json_error(R"({"models": [{"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,1,1]],
       "control_points": [[[0,0],[1,0]], [[0,1]]]}]})"),
             "m.json, models[0].control_points[1]: row 1 has 1 point, row 0 has 2 (a control net is rectangular)");
 }
 
 TEST(ModelJsonSurface, RefusesBadNetsAndPoints) {
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": []})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": []})"),
             "m.json, control_points: " + test::refusal(ControlNet::make(0, 0, PointArray{})));
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[], []]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": [[], []]})"),
             "m.json, control_points: " + test::refusal(ControlNet::make(2, 0, PointArray{})));
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[0, 1]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": [[0, 1]]})"),
             "m.json, control_points[0][0]: expected a point (an array of numbers), found the number 0");
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[[0,0,0]], [[0,1]]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": [[[0,0,0]], [[0,1]]]})"),
             "m.json, control_points[1][0]: 2 coordinates, but control_points[0][0] has 3 (all points must have the "
             "same dimension)");
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[[0,"x"]]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": [[[0,"x"]]]})"),
             "m.json, control_points[0][0][1]: expected a number, found the string 'x'");
 }
 
 TEST(ModelJsonSurface, RefusesWeightsThatDoNotMatchTheNet) {
   const std::string points = R"("control_points": [[[0,0],[1,0],[2,0]], [[0,1],[1,1],[2,1]]])";
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", )" + points + R"(, "weights": [[1,1,1]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", )" + points + R"(, "weights": [[1,1,1]]})"),
             "m.json, weights: 1 row of weights for a control net of 2 rows, expected one weight per control point");
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", )" + points + R"(, "weights": [[1,1,1],[1,1]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", )" + points + R"(, "weights": [[1,1,1],[1,1]]})"),
             "m.json, weights[1]: row 1 has 2 weights, the control net has 3 points per row");
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", )" + points + R"(, "weights": [1,1,1,1,1,1]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", )" + points + R"(, "weights": [1,1,1,1,1,1]})"),
             "m.json, weights: 6 rows of weights for a control net of 2 rows, expected one weight per control point");
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", )" + points + R"(, "weights": [1,1]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", )" + points + R"(, "weights": [1,1]})"),
             "m.json, weights[0]: expected a row (an array of numbers), found the number 1");
   // The values are make()'s to judge: its words, at the field's path.
   const ControlNet two_by_three = net(2, 3, 2, {0, 0, 1, 0, 2, 0, 0, 1, 1, 1, 2, 1});
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", )" + points + R"(, "weights": [[1,1,1],[1,0,1]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", )" + points + R"(, "weights": [[1,1,1],[1,0,1]]})"),
             "m.json, weights: " + test::refusal(BezierSurface::make(two_by_three, {1, 1, 1, 1, 0, 1})));
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
                      points + R"(, "weights": [[1,1,1],[1,1,-2]]})"),
             "m.json, weights: " + test::refusal(BSplineSurface::make(1, 1, {0, 0, 1, 1}, {0, 0, 0.5, 1, 1},
                                                                       two_by_three, {1, 1, 1, 1, 1, -2})));
 }
 
 TEST(ModelJsonSurface, RefusesUnknownFields) {
-  EXPECT_EQ(error_of(R"({"type": "bezier_surface", "control_points": [[[0]]], "knots": []})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": [[[0]]], "knots": []})"),
             "m.json, the top level: unknown field 'knots' (a bezier_surface model has the fields type, "
             "control_points, weights)");
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [0,0], "knots": [[0,1],[0,1]],
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [0,0], "knots": [[0,1],[0,1]],
       "control_points": [[[0]]], "colour": 1})"),
             "m.json, the top level: unknown field 'colour' (a bspline_surface model has the fields type, degree, "
             "knots, control_points, weights)");
-  EXPECT_EQ(error_of(R"({"type": "coons", "boundaries": {}, "degree": 3})"),
+  EXPECT_EQ(json_error(R"({"type": "coons", "boundaries": {}, "degree": 3})"),
             "m.json, the top level: unknown field 'degree' (a coons model has the fields type, blending, "
             "boundaries)");
-  EXPECT_EQ(error_of(R"({"type": "coons", "boundaries": {"w0": {}}})"),
+  EXPECT_EQ(json_error(R"({"type": "coons", "boundaries": {"w0": {}}})"),
             "m.json, boundaries: unknown field 'w0' (the boundaries object of a coons model has the fields u0, u1, v0, v1)");
 }
 
 TEST(ModelJsonSurface, RefusesBadDegreesAndKnotsPerDirection) {
   const std::string points = R"("control_points": [[[0],[1],[2]], [[3],[4],[5]]])";
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": 1, "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" + points +
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": 1, "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" + points +
                      "}"),
             "m.json, degree: expected [p, q], the degrees in u and in v, found the number 1");
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1.5], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [1,1.5], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
                      points + "}"),
             "m.json, degree[1]: expected a whole number, found the number 1.5");
   // The values are make()'s to judge: its words, at the field's path (a
   // direction's error at that element of the pair).
   const ControlNet two_by_three = net(2, 3, 1, {0, 1, 2, 3, 4, 5});
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [2,1], "knots": [[0,0,0,1,1,1],[0,0,0.5,1,1]], )" +
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [2,1], "knots": [[0,0,0,1,1,1],[0,0,0.5,1,1]], )" +
                      points + "}"),
             "m.json, control_points: " +
                 test::refusal(BSplineSurface::make(2, 1, {0, 0, 0, 1, 1, 1}, {0, 0, 0.5, 1, 1}, two_by_three)));
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,3], "knots": [[0,0,1,1],[0,0,0,0,1,1,1,1]], )" +
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [1,3], "knots": [[0,0,1,1],[0,0,0,0,1,1,1,1]], )" +
                      points + "}"),
             "m.json, control_points: " +
                 test::refusal(BSplineSurface::make(1, 3, {0, 0, 1, 1}, {0, 0, 0, 0, 1, 1, 1, 1}, two_by_three)));
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [-1,1], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [-1,1], "knots": [[0,0,1,1],[0,0,0.5,1,1]], )" +
                      points + "}"),
             "m.json, degree[0]: " +
                 test::refusal(BSplineSurface::make(-1, 1, {0, 0, 1, 1}, {0, 0, 0.5, 1, 1}, two_by_three)));
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1]], )" + points + "}"),
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1]], )" + points + "}"),
             "m.json, knots: expected [[u knots], [v knots]], two arrays of numbers, found an array of 1 elements");
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,1,1]], )" + points +
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,1,1]], )" + points +
                      "}"),
             "m.json, knots[1]: " + test::refusal(validate_knots(std::vector<double>{0, 0, 1, 1}, 1, 3)) +
                 "; model JSON also reads 3 knots (control points + degree - 1, the Rhino/openNURBS convention)");
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,0.7,0.5,1]], )" +
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1],[0,0,0.7,0.5,1]], )" +
                      points + "}"),
             "m.json, knots[1]: " + test::refusal(validate_knots(std::vector<double>{0, 0, 0.7, 0.5, 1}, 1, 3)));
-  EXPECT_EQ(error_of(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,1,1,1],[0,0,0.5,1,1]], )" +
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,1,1,1],[0,0,0.5,1,1]], )" +
                      points + "}"),
             "m.json, knots[0]: " + test::refusal(validate_knots(std::vector<double>{0, 1, 1, 1}, 1, 2)));
 }
@@ -340,24 +327,24 @@ std::string coons_with(const std::string& u0, const std::string& u1, const std::
 }
 
 TEST(ModelJsonSurface, RefusesBadCoonsPatches) {
-  EXPECT_EQ(error_of(R"({"type": "coons", "boundaries": {"u0": )" + std::string(kLine00to01) + R"(, "u1": )" +
+  EXPECT_EQ(json_error(R"({"type": "coons", "boundaries": {"u0": )" + std::string(kLine00to01) + R"(, "u1": )" +
                      kLine10to11 + R"(, "v0": )" + kLine00to10 + "}}"),
             "m.json, boundaries: missing boundary 'v1' (a coons patch needs the four curves u0, u1, v0, v1)");
-  EXPECT_EQ(error_of(R"({"type": "coons", "blending": "linear"})"),
+  EXPECT_EQ(json_error(R"({"type": "coons", "blending": "linear"})"),
             "m.json, the top level: missing field 'boundaries' (u0, u1, v0, v1)");
-  EXPECT_EQ(error_of(coons_with(kLine00to01, kLine10to11, kLine00to10, kLine01to11, R"("blending": "quintic", )")),
+  EXPECT_EQ(json_error(coons_with(kLine00to01, kLine10to11, kLine00to10, kLine01to11, R"("blending": "quintic", )")),
             "m.json, blending: unknown blending 'quintic' (linear or cubic)");
-  EXPECT_EQ(error_of(coons_with(kLine00to01, kLine10to11, kLine00to10,
+  EXPECT_EQ(json_error(coons_with(kLine00to01, kLine10to11, kLine00to10,
                                 R"({"type": "bezier_surface", "control_points": [[[0,1],[1,1]]]})")),
             "m.json, boundaries.v1: a bezier_surface model cannot be a boundary, a coons boundary is a curve (bezier, "
             "piecewise_bezier, bspline)");
   // A boundary's own errors keep their path.
-  EXPECT_EQ(error_of(coons_with(kLine00to01, kLine10to11, R"({"type": "bezier", "control_points": [[0,0],[1]]})",
+  EXPECT_EQ(json_error(coons_with(kLine00to01, kLine10to11, R"({"type": "bezier", "control_points": [[0,0],[1]]})",
                                 kLine01to11)),
             "m.json, boundaries.v0.control_points[1]: 1 coordinate, but boundaries.v0.control_points[0] has 2 (all "
             "points must have the same dimension)");
   // Pieces of a piecewise boundary that do not meet have no B-spline form.
-  const std::string broken = error_of(coons_with(
+  const std::string broken = json_error(coons_with(
       kLine00to01, kLine10to11, R"({"type": "piecewise_bezier", "pieces": [[[0,0],[0.5,0]], [[0.6,0],[1,0]]]})",
       kLine01to11));
   EXPECT_EQ(broken.rfind("m.json, boundaries.v0: ", 0), 0u) << broken;
@@ -365,7 +352,7 @@ TEST(ModelJsonSurface, RefusesBadCoonsPatches) {
 
 TEST(ModelJsonSurface, RefusesCoonsBoundariesThatDoNotMeetAndSaysWhere) {
   // v0 ends at (1, 0.5) instead of (1, 0): the corner P(1,0) is open.
-  const std::string message = error_of(coons_with(kLine00to01, kLine10to11,
+  const std::string message = json_error(coons_with(kLine00to01, kLine10to11,
                                                   R"({"type": "bezier", "control_points": [[0,0],[1,0.5]]})",
                                                   kLine01to11));
   EXPECT_EQ(message.rfind("m.json, boundaries: ", 0), 0u) << message;
@@ -373,12 +360,12 @@ TEST(ModelJsonSurface, RefusesCoonsBoundariesThatDoNotMeetAndSaysWhere) {
   EXPECT_NE(message.find("v0"), std::string::npos) << message;
   // Curves of different dimensions.
   const std::string dimensions =
-      error_of(coons_with(kLine00to01, kLine10to11, kLine00to10, R"({"type": "bezier", "control_points": [[0,1,0],[1,1,0]]})"));
+      json_error(coons_with(kLine00to01, kLine10to11, kLine00to10, R"({"type": "bezier", "control_points": [[0,1,0],[1,1,0]]})"));
   EXPECT_EQ(dimensions.rfind("m.json, boundaries: ", 0), 0u) << dimensions;
 }
 
 TEST(ModelJsonSurface, CurveFunctionsStillServeCurves) {
-  const Model curve = parse_one(R"({"type": "bezier", "control_points": [[0,0],[1,2],[2,0]]})");
+  const Model curve = parse_one_model(R"({"type": "bezier", "control_points": [[0,0],[1,2],[2,0]]})");
   EXPECT_FALSE(is_surface(curve));
   EXPECT_EQ(curve_view(curve).domain(), (Interval{0.0, 1.0}));
   EXPECT_EQ(derivative_at(curve_view(curve), 0.5, 0), (Point{1, 1}));

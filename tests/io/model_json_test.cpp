@@ -1,8 +1,10 @@
 // Model JSON version 1 (docs/formats.md, "Model JSON"): every accepted form,
 // every refused one with its exact message (line and column for syntax,
 // field path for content), and the round trip to_json -> parse, bit for bit.
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
+#include "support/make.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -15,38 +17,31 @@
 namespace casteljau {
 namespace {
 
+using test::bezier_of;
+using test::json_error;
+
 std::vector<Model> parse(const std::string& text) {
   auto models = parse_models_json(text, "m.json");
   EXPECT_TRUE(models.has_value()) << models.error().message;
   return models ? *models : std::vector<Model>{};
 }
 
-std::string error_of(const std::string& text) {
-  const auto models = parse_models_json(text, "m.json");
-  EXPECT_FALSE(models.has_value()) << text;
-  return models ? std::string{} : models.error().message;
-}
-
-BezierCurve curve(int d, std::vector<double> c, std::vector<double> weights = {}) {
-  return BezierCurve::make(PointArray::make(d, std::move(c)).value(), std::move(weights)).value();
-}
-
 TEST(ModelJson, ReadsABezierCurve) {
   const auto models = parse(R"({"type": "bezier", "control_points": [[0,0],[1,2],[2,2],[4,1],[4,0]]})");
   ASSERT_EQ(models.size(), 1u);
-  EXPECT_EQ(std::get<BezierCurve>(models[0]), curve(2, {0, 0, 1, 2, 2, 2, 4, 1, 4, 0}));
+  EXPECT_EQ(std::get<BezierCurve>(models[0]), bezier_of(2, {0, 0, 1, 2, 2, 2, 4, 1, 4, 0}));
 }
 
 TEST(ModelJson, ReadsARationalBezierCurve) {
   const auto models =
       parse(R"({"type": "bezier", "control_points": [[1,0],[1,1],[0,1]], "weights": [1, 0.7071067811865476, 1]})");
   ASSERT_EQ(models.size(), 1u);
-  EXPECT_EQ(std::get<BezierCurve>(models[0]), curve(2, {1, 0, 1, 1, 0, 1}, {1, 0.7071067811865476, 1}));
+  EXPECT_EQ(std::get<BezierCurve>(models[0]), bezier_of(2, {1, 0, 1, 1, 0, 1}, {1, 0.7071067811865476, 1}));
 }
 
 TEST(ModelJson, ReadsAnyDimensionAndFieldOrder) {
   const auto models = parse(" \n{\"control_points\": [[1.5],[-2e3],[7]], \"type\": \"bezier\"}\n ");
-  EXPECT_EQ(std::get<BezierCurve>(models.at(0)), curve(1, {1.5, -2000, 7}));
+  EXPECT_EQ(std::get<BezierCurve>(models.at(0)), bezier_of(1, {1.5, -2000, 7}));
   const auto three = parse(R"({"type": "bezier", "control_points": [[0,0,0],[1,2,3]]})");
   EXPECT_EQ(dimension_of(three.at(0)), 3);
 }
@@ -58,8 +53,8 @@ TEST(ModelJson, ReadsAPiecewiseCurveWithPolynomialAndRationalPieces) {
   ASSERT_EQ(models.size(), 1u);
   const auto& piecewise = std::get<PiecewiseBezierCurve>(models[0]);
   ASSERT_EQ(piecewise.size(), 2);
-  EXPECT_EQ(piecewise.pieces()[0], curve(2, {0, 0, 1, 1, 2, 1, 3, 0}));
-  EXPECT_EQ(piecewise.pieces()[1], curve(2, {3, 0, 4, -1, 5, 0}, {1, 2, 1}));
+  EXPECT_EQ(piecewise.pieces()[0], bezier_of(2, {0, 0, 1, 1, 2, 1, 3, 0}));
+  EXPECT_EQ(piecewise.pieces()[1], bezier_of(2, {3, 0, 4, -1, 5, 0}, {1, 2, 1}));
   EXPECT_EQ(curve_view(models[0]).domain(), (Interval{0.0, 2.0}));
 }
 
@@ -71,7 +66,7 @@ TEST(ModelJson, ReadsSeveralModelsInOrder) {
   ASSERT_EQ(models.size(), 3u);
   EXPECT_STREQ(type_name(models[0]), "bezier");
   EXPECT_STREQ(type_name(models[1]), "piecewise_bezier");
-  EXPECT_EQ(std::get<BezierCurve>(models[2]), curve(3, {5, 5, 5}));
+  EXPECT_EQ(std::get<BezierCurve>(models[2]), bezier_of(3, {5, 5, 5}));
 }
 
 TEST(ModelJson, ReadsLargeIntegersAndTinyNumbersAsJsonReadersDo) {
@@ -86,116 +81,116 @@ TEST(ModelJson, ReadsLargeIntegersAndTinyNumbersAsJsonReadersDo) {
 }
 
 TEST(ModelJson, SyntaxErrorsGiveLineAndColumn) {
-  EXPECT_EQ(error_of("{\"type\": \"bezier\",\n  \"control_points\": [[0,0],[1,2],]}"),
+  EXPECT_EQ(json_error("{\"type\": \"bezier\",\n  \"control_points\": [[0,0],[1,2],]}"),
             "m.json, line 2, column 34: syntax error while parsing value - unexpected ']'; expected '[', '{', or a "
             "literal");
-  EXPECT_EQ(error_of(""),
+  EXPECT_EQ(json_error(""),
             "m.json, line 1, column 1: syntax error while parsing value - unexpected end of input; expected '[', '{', "
             "or a literal");
-  EXPECT_EQ(error_of("{\"type\": \"bezier\"\n"),
+  EXPECT_EQ(json_error("{\"type\": \"bezier\"\n"),
             "m.json, line 2, column 1: syntax error while parsing object - unexpected end of input; expected '}'");
-  EXPECT_EQ(error_of("{\"type\": \"bezier\", \"control_points\": [[0]]} x"),
+  EXPECT_EQ(json_error("{\"type\": \"bezier\", \"control_points\": [[0]]} x"),
             "m.json, line 1, column 45: syntax error while parsing value - invalid literal; last read: '0]]} x'; "
             "expected end of input");
   // The column counts characters, not bytes: "é" is two bytes of UTF-8. The
   // parser stops at the 'a' of "nan" (column 8), where no JSON literal fits.
-  EXPECT_EQ(error_of("{\"é\": nan}"),
+  EXPECT_EQ(json_error("{\"é\": nan}"),
             "m.json, line 1, column 8: syntax error while parsing value - invalid literal; "
             "last read: '\"é\": na'");
   // A raw line break inside a string: the message stays on one line.
-  const std::string message = error_of("{\"type\": \"bez\nier\"}");
+  const std::string message = json_error("{\"type\": \"bez\nier\"}");
   EXPECT_EQ(message.find('\n'), std::string::npos);
   EXPECT_EQ(message.substr(0, 26), "m.json, line 1, column 14:");
 }
 
 TEST(ModelJson, NumbersThatOverflowGiveLineColumnAndPath) {
-  EXPECT_EQ(error_of("{\"type\": \"bezier\",\n \"control_points\": [[0,0],[1,1e999]]}"),
+  EXPECT_EQ(json_error("{\"type\": \"bezier\",\n \"control_points\": [[0,0],[1,1e999]]}"),
             "m.json, line 2, column 30, control_points[1][1]: the number '1e999' overflows to infinity, numbers must "
             "be finite");
-  EXPECT_EQ(error_of("{\"models\": [{}, {\"type\": \"bezier\", \"control_points\": [[-1e400]]}]}"),
+  EXPECT_EQ(json_error("{\"models\": [{}, {\"type\": \"bezier\", \"control_points\": [[-1e400]]}]}"),
             "m.json, line 1, column 56, models[1].control_points[0][0]: the number '-1e400' overflows to infinity, "
             "numbers must be finite");
 }
 
 TEST(ModelJson, BadFieldsNameTheirPath) {
-  EXPECT_EQ(error_of(R"({"models": [{"type": "bezier", "control_points": [[0,0]]},
+  EXPECT_EQ(json_error(R"({"models": [{"type": "bezier", "control_points": [[0,0]]},
                                    {"type": "bezier", "control_points": [[0,1],[1,"a"]]}]})"),
             "m.json, models[1].control_points[1][1]: expected a number, found the string 'a'");
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,true]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,true]]})"),
             "m.json, control_points[0][1]: expected a number, found true");
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,null]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,null]]})"),
             "m.json, control_points[0][1]: expected a number, found null");
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,[1]]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,[1]]]})"),
             "m.json, control_points[0][1]: expected a number, found an array");
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0], 3]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,0], 3]})"),
             "m.json, control_points[1]: expected a point (an array of numbers), found the number 3");
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": {"x": 1}})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": {"x": 1}})"),
             "m.json, control_points: expected an array of points, found an object");
 }
 
 TEST(ModelJson, UnknownFieldsAreErrors) {
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0]], "colour": "red"})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,0]], "colour": "red"})"),
             "m.json, the top level: unknown field 'colour' (a bezier model has the fields type, control_points, "
             "weights)");
-  EXPECT_EQ(error_of(R"({"models": [{"type": "piecewise_bezier", "pieces": [[[0]]], "closed": true}]})"),
+  EXPECT_EQ(json_error(R"({"models": [{"type": "piecewise_bezier", "pieces": [[[0]]], "closed": true}]})"),
             "m.json, models[0]: unknown field 'closed' (a piecewise_bezier model has the fields type, pieces)");
-  EXPECT_EQ(error_of(R"({"models": [{"type": "bezier", "control_points": [[0]]}], "version": 1})"),
+  EXPECT_EQ(json_error(R"({"models": [{"type": "bezier", "control_points": [[0]]}], "version": 1})"),
             "m.json, the top level: unknown field 'version' (a file of several models has only the field 'models')");
   EXPECT_EQ(
-      error_of(R"({"type": "piecewise_bezier", "pieces": [{"type": "bezier", "control_points": [[0]], "w": 1}]})"),
+      json_error(R"({"type": "piecewise_bezier", "pieces": [{"type": "bezier", "control_points": [[0]], "w": 1}]})"),
       "m.json, pieces[0]: unknown field 'w' (a bezier model has the fields type, control_points, weights)");
 }
 
 TEST(ModelJson, EveryTypeOfTheInterfaceIsKnownAndUnknownTypesAreNamed) {
   // The surface kinds are parsed (tests/io/model_json_surface_test.cpp); an
   // incomplete one is refused for its missing field, not for its type.
-  EXPECT_EQ(error_of(R"({"models": [{"type": "bezier_surface"}]})"), "m.json, models[0]: missing field 'control_points'");
-  EXPECT_EQ(error_of(R"({"models": [{"type": "bspline_surface"}]})"), "m.json, models[0]: missing field 'degree'");
-  EXPECT_EQ(error_of(R"({"models": [{"type": "coons"}]})"),
+  EXPECT_EQ(json_error(R"({"models": [{"type": "bezier_surface"}]})"), "m.json, models[0]: missing field 'control_points'");
+  EXPECT_EQ(json_error(R"({"models": [{"type": "bspline_surface"}]})"), "m.json, models[0]: missing field 'degree'");
+  EXPECT_EQ(json_error(R"({"models": [{"type": "coons"}]})"),
             "m.json, models[0]: missing field 'boundaries' (u0, u1, v0, v1)");
-  EXPECT_EQ(error_of(R"({"models": [{"type": "nurbs"}]})"),
+  EXPECT_EQ(json_error(R"({"models": [{"type": "nurbs"}]})"),
             "m.json, models[0].type: unknown model type 'nurbs' (model JSON version 1 has bezier, piecewise_bezier, "
             "bspline, bezier_surface, bspline_surface, coons)");
-  EXPECT_EQ(error_of(R"({"control_points": [[0,0]]})"),
+  EXPECT_EQ(json_error(R"({"control_points": [[0,0]]})"),
             "m.json, the top level: missing field 'type' (bezier, piecewise_bezier, bspline, bezier_surface, "
             "bspline_surface, coons)");
-  EXPECT_EQ(error_of(R"({"type": 1})"), "m.json, type: expected a string, found the number 1");
+  EXPECT_EQ(json_error(R"({"type": 1})"), "m.json, type: expected a string, found the number 1");
 }
 
 TEST(ModelJson, EmptyPolygonsAndPointsAreErrors) {
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": []})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": []})"),
             "m.json, control_points: " + test::refusal(BezierCurve::make(PointArray{})));
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[]]})"),
             "m.json, control_points[0]: the point has no coordinates");
-  EXPECT_EQ(error_of(R"({"type": "bezier"})"), "m.json, the top level: missing field 'control_points'");
-  EXPECT_EQ(error_of(R"({"type": "piecewise_bezier", "pieces": []})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier"})"), "m.json, the top level: missing field 'control_points'");
+  EXPECT_EQ(json_error(R"({"type": "piecewise_bezier", "pieces": []})"),
             "m.json, pieces: " + test::refusal(PiecewiseBezierCurve::make({})));
-  EXPECT_EQ(error_of(R"({"type": "piecewise_bezier", "pieces": [[[0]], []]})"),
+  EXPECT_EQ(json_error(R"({"type": "piecewise_bezier", "pieces": [[[0]], []]})"),
             "m.json, pieces[1]: " + test::refusal(BezierCurve::make(PointArray{})));
-  EXPECT_EQ(error_of(R"({"type": "piecewise_bezier"})"), "m.json, the top level: missing field 'pieces'");
+  EXPECT_EQ(json_error(R"({"type": "piecewise_bezier"})"), "m.json, the top level: missing field 'pieces'");
 }
 
 TEST(ModelJson, MixedDimensionsAreErrors) {
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0],[1,2],[1,2,3]]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,0],[1,2],[1,2,3]]})"),
             "m.json, control_points[2]: 3 coordinates, but control_points[0] has 2 (all points must have the same "
             "dimension)");
-  EXPECT_EQ(error_of(R"({"type": "piecewise_bezier", "pieces": [[[0,0],[1,1]], [[1,1,0],[2,2,0]]]})"),
+  EXPECT_EQ(json_error(R"({"type": "piecewise_bezier", "pieces": [[[0,0],[1,1]], [[1,1,0],[2,2,0]]]})"),
             "m.json, pieces: " +
-                test::refusal(PiecewiseBezierCurve::make({curve(2, {0, 0, 1, 1}), curve(3, {1, 1, 0, 2, 2, 0})})));
+                test::refusal(PiecewiseBezierCurve::make({bezier_of(2, {0, 0, 1, 1}), bezier_of(3, {1, 1, 0, 2, 2, 0})})));
 }
 
 TEST(ModelJson, BadWeightsAreErrors) {
   // The values are make()'s to judge: its words, at the field's path.
   const auto line = PointArray::make(2, {0, 0, 1, 2}).value();
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [1, 0]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [1, 0]})"),
             "m.json, weights: " + test::refusal(BezierCurve::make(line, {1, 0})));
-  EXPECT_EQ(error_of(R"({"models": [{"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [-0.5, 1]}]})"),
+  EXPECT_EQ(json_error(R"({"models": [{"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [-0.5, 1]}]})"),
             "m.json, models[0].weights: " + test::refusal(BezierCurve::make(line, {-0.5, 1})));
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [1]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,0],[1,2]], "weights": [1]})"),
             "m.json, weights: " + test::refusal(BezierCurve::make(line, {1})));
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0]], "weights": ["1"]})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,0]], "weights": ["1"]})"),
             "m.json, weights[0]: expected a number, found the string '1'");
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0,0]], "weights": 1})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0,0]], "weights": 1})"),
             "m.json, weights: expected an array of numbers, found the number 1");
 }
 
@@ -261,23 +256,23 @@ RC_GTEST_PROP(ModelJson, EveryRefusalNamesTheFileOnOneLine, ()) {
 
 TEST(ModelJson, TheDocumentShapeIsChecked) {
   EXPECT_EQ(
-      error_of("[1]"),
+      json_error("[1]"),
       "m.json, the top level: expected an object (one model, or {\"models\": [...]} for several), found an array");
-  EXPECT_EQ(error_of(R"({"models": []})"), "m.json, models: the array is empty, expected at least one model");
-  EXPECT_EQ(error_of(R"({"models": {}})"), "m.json, models: expected an array of models, found an object");
-  EXPECT_EQ(error_of(R"({"models": [3]})"), "m.json, models[0]: expected a model object, found the number 3");
-  EXPECT_EQ(error_of(R"({"type": "bezier", "type": "bezier", "control_points": [[0]]})"),
+  EXPECT_EQ(json_error(R"({"models": []})"), "m.json, models: the array is empty, expected at least one model");
+  EXPECT_EQ(json_error(R"({"models": {}})"), "m.json, models: expected an array of models, found an object");
+  EXPECT_EQ(json_error(R"({"models": [3]})"), "m.json, models[0]: expected a model object, found the number 3");
+  EXPECT_EQ(json_error(R"({"type": "bezier", "type": "bezier", "control_points": [[0]]})"),
             "m.json, type: the key 'type' appears twice in the same object");
-  EXPECT_EQ(error_of(R"({"type": "piecewise_bezier", "pieces": [{"type": "piecewise_bezier"}]})"),
+  EXPECT_EQ(json_error(R"({"type": "piecewise_bezier", "pieces": [{"type": "piecewise_bezier"}]})"),
             "m.json, pieces[0].type: expected \"bezier\" (a piece object is a bezier model), found the string "
             "'piecewise_bezier'");
-  EXPECT_EQ(error_of(R"({"type": "piecewise_bezier", "pieces": [5]})"),
+  EXPECT_EQ(json_error(R"({"type": "piecewise_bezier", "pieces": [5]})"),
             "m.json, pieces[0]: expected a piece (an array of control points, or a bezier model object), found the "
             "number 5");
 }
 
 TEST(ModelJson, EscapedControlCharactersStayEscapedInMessages) {
-  EXPECT_EQ(error_of(R"({"type": "bezier", "control_points": [[0]], "a\nb": 1})"),
+  EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": [[0]], "a\nb": 1})"),
             "m.json, the top level: unknown field 'a\\x0ab' (a bezier model has the fields type, control_points, "
             "weights)");
 }
@@ -285,7 +280,7 @@ TEST(ModelJson, EscapedControlCharactersStayEscapedInMessages) {
 TEST(ModelJson, DeepNestingIsRefusedWithoutExhaustingTheStack) {
   const std::size_t depth = 200000;
   EXPECT_EQ(
-      error_of(std::string(depth, '[') + std::string(depth, ']')),
+      json_error(std::string(depth, '[') + std::string(depth, ']')),
       "m.json, the top level: expected an object (one model, or {\"models\": [...]} for several), found an array");
 }
 
@@ -295,21 +290,21 @@ TEST(ModelJson, ArraysLongerThanTheControlPointLimitAreRefusedWhileParsing) {
   for (std::size_t i = 0; i <= tolerances::kMaxControlPoints; ++i) text += "0,";
   text.back() = ']';
   text += '}';
-  EXPECT_EQ(error_of(text),
+  EXPECT_EQ(json_error(text),
             "m.json, control_points[10000000]: an array of more than 10000000 elements, the limit for one model");
 }
 
 TEST(ModelJson, WritesOneLineWithShortestNumbers) {
-  EXPECT_EQ(to_json(Model{curve(2, {0, 0, 1, 2.5, 0.1, -0.0})}),
+  EXPECT_EQ(to_json(Model{bezier_of(2, {0, 0, 1, 2.5, 0.1, -0.0})}),
             R"({"type":"bezier","control_points":[[0,0],[1,2.5],[0.1,-0.0]]})");
-  EXPECT_EQ(to_json(Model{curve(2, {1, 0, 1, 1, 0, 1}, {1, 0.7071067811865476, 1})}),
+  EXPECT_EQ(to_json(Model{bezier_of(2, {1, 0, 1, 1, 0, 1}, {1, 0.7071067811865476, 1})}),
             R"({"type":"bezier","control_points":[[1,0],[1,1],[0,1]],"weights":[1,0.7071067811865476,1]})");
-  const auto piecewise = PiecewiseBezierCurve::make({curve(1, {0, 1}), curve(1, {1, 2, 3}, {1, 1e-50, 2})}).value();
+  const auto piecewise = PiecewiseBezierCurve::make({bezier_of(1, {0, 1}), bezier_of(1, {1, 2, 3}, {1, 1e-50, 2})}).value();
   EXPECT_EQ(
       to_json(Model{piecewise}),
       R"({"type":"piecewise_bezier","pieces":[[[0],[1]],{"type":"bezier","control_points":[[1],[2],[3]],"weights":[1,1e-50,2]}]})");
-  EXPECT_EQ(models_to_json({Model{curve(1, {0})}}), "{\"type\":\"bezier\",\"control_points\":[[0]]}\n");
-  EXPECT_EQ(models_to_json({Model{curve(1, {0})}, Model{curve(1, {1})}}),
+  EXPECT_EQ(models_to_json({Model{bezier_of(1, {0})}}), "{\"type\":\"bezier\",\"control_points\":[[0]]}\n");
+  EXPECT_EQ(models_to_json({Model{bezier_of(1, {0})}, Model{bezier_of(1, {1})}}),
             "{\"models\":[\n{\"type\":\"bezier\",\"control_points\":[[0]]},\n"
             "{\"type\":\"bezier\",\"control_points\":[[1]]}\n]}\n");
 }
@@ -323,7 +318,7 @@ rc::Gen<BezierCurve> any_curve(int d) {
     if (*rc::gen::arbitrary<bool>()) {
       weights = *rc::gen::container<std::vector<double>>(n + 1, test::any_model_weight());
     }
-    return curve(d, std::move(c), std::move(weights));
+    return bezier_of(d, std::move(c), std::move(weights));
   });
 }
 
@@ -379,7 +374,7 @@ TEST(ModelFiles, FormatIsChosenByExtensionThenContent) {
   test::write_text(folder / "a.model", "\xEF\xBB\xBF\n  " + json);
   test::write_text(folder / "a.points", "x,y\n0,0\n4,0\n");
   test::write_text(folder / "a.csv", "0,0\n4,0\n");
-  const Model expected{curve(2, {0, 0, 4, 0})};
+  const Model expected{bezier_of(2, {0, 0, 4, 0})};
   for (const char* name : {"a.json", "a.JSON", "a.model", "a.points", "a.csv"}) {
     const auto models = read_models(folder / name);
     ASSERT_TRUE(models.has_value()) << name << ": " << models.error().message;

@@ -11,19 +11,19 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
+#include "support/examples_dir.hpp"
 #include "support/generators.hpp"
+#include "support/make.hpp"
 
 namespace casteljau {
 namespace {
 
-BezierCurve curve(int d, std::vector<double> c, std::vector<double> weights = {}) {
-  return BezierCurve::make(PointArray::make(d, std::move(c)).value(), std::move(weights)).value();
-}
+using test::bezier_of;
 
 TEST(Model, NotebookPolygonAsABezierCurveGivesTheSeedValue) {
   // Seed 004: control points (0,0),(1,2),(2,2),(4,1),(4,0) give B(0.5) = (2.25, 1.5).
   // Every de Casteljau step at t = 1/2 on these integers is exact in binary.
-  const auto models = read_models(std::string(CASTELJAU_EXAMPLES_DIR) + "/notebook_polygon.csv");
+  const auto models = read_models(test::examples_dir() / "notebook_polygon.csv");
   ASSERT_TRUE(models.has_value()) << models.error().message;
   ASSERT_EQ(models->size(), 1u);
   const Model& model = models->front();
@@ -41,9 +41,9 @@ TEST(Model, NotebookPolygonAsABezierCurveGivesTheSeedValue) {
 }
 
 TEST(Model, DescribesEachKind) {
-  const Model bezier{curve(3, {0, 0, 0, 1, 1, 1})};
+  const Model bezier{bezier_of(3, {0, 0, 0, 1, 1, 1})};
   const Model piecewise{
-      PiecewiseBezierCurve::make({curve(2, {0, 0, 1, 0}), curve(2, {1, 0, 1, 1, 2, 1}), curve(2, {2, 1, 3, 3})})
+      PiecewiseBezierCurve::make({bezier_of(2, {0, 0, 1, 0}), bezier_of(2, {1, 0, 1, 1, 2, 1}), bezier_of(2, {2, 1, 3, 3})})
           .value()};
   EXPECT_EQ(curve_view(bezier).domain(), (Interval{0.0, 1.0}));
   EXPECT_EQ(curve_view(piecewise).domain(), (Interval{0.0, 3.0}));
@@ -59,7 +59,7 @@ TEST(Model, DescribesEachKind) {
 
 TEST(Model, PiecewiseDerivativesAtJunctionsComeFromThePieceToTheRight) {
   // Two pieces that meet at (1,0) with different tangents: (1,0) on the left, (0,2) on the right.
-  const Model model{PiecewiseBezierCurve::make({curve(2, {0, 0, 1, 0}), curve(2, {1, 0, 1, 2})}).value()};
+  const Model model{PiecewiseBezierCurve::make({bezier_of(2, {0, 0, 1, 0}), bezier_of(2, {1, 0, 1, 2})}).value()};
   EXPECT_EQ(derivative_at(curve_view(model), 1.0, 1), (Point{0, 2}));
   EXPECT_EQ(derivative_at(curve_view(model), 0.5, 1), (Point{1, 0}));
   EXPECT_EQ(derivative_at(curve_view(model), 2.0, 1), (Point{0, 2}));  // the end of the domain: the last piece

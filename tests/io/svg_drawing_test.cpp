@@ -27,7 +27,7 @@ namespace {
 
 using Flat = std::vector<double>;
 
-SvgDrawing read_valid(const std::string& body, const std::string& root = "<svg xmlns='http://www.w3.org/2000/svg'>",
+SvgDrawing read_drawing(const std::string& body, const std::string& root = "<svg xmlns='http://www.w3.org/2000/svg'>",
                       DrawingUnits units = DrawingUnits::user) {
   const std::string text = root + body + "</svg>";
   auto drawing = parse_svg_drawing(text, "t.svg", units);
@@ -47,7 +47,7 @@ std::vector<std::string> problems_of(const std::string& body) {
   return messages;
 }
 
-Flat points_of(const SvgCurve& curve, std::size_t piece = 0) {
+Flat drawing_points(const SvgCurve& curve, std::size_t piece = 0) {
   const auto c = curve.curve.pieces().at(piece).control_points().coordinates();
   return {c.begin(), c.end()};
 }
@@ -60,8 +60,8 @@ void expect_near(const Flat& actual, const Flat& expected, double tolerance = 1e
 TEST(SvgDrawing, EachTransformFormMovesThePoint) {
   // (1, 1) and (2, 0) under each form, worked from SVG 1.1 §7.6's matrices.
   const auto moved = [](const std::string& transform) {
-    const auto drawing = read_valid(fmt::format("<path transform='{}' d='M1 1L2 0'/>", transform));
-    return drawing.curves.empty() ? Flat{} : points_of(drawing.curves[0]);
+    const auto drawing = read_drawing(fmt::format("<path transform='{}' d='M1 1L2 0'/>", transform));
+    return drawing.curves.empty() ? Flat{} : drawing_points(drawing.curves[0]);
   };
   expect_near(moved("matrix(1 2 3 4 5 6)"), {9, 12, 7, 10});
   expect_near(moved("translate(5)"), {6, 1, 7, 0});
@@ -82,11 +82,11 @@ TEST(SvgDrawing, EachTransformFormMovesThePoint) {
 }
 
 TEST(SvgDrawing, GroupTransformsComposeOutsideIn) {
-  const auto drawing = read_valid(
+  const auto drawing = read_drawing(
       "<g transform='translate(10 20)'><g transform='scale(2)'><path transform='translate(1)' d='M0 0L1 1'/>"
       "</g></g>");
   ASSERT_EQ(drawing.curves.size(), 1u);
-  EXPECT_EQ(points_of(drawing.curves[0]), (Flat{12, 20, 14, 22}));
+  EXPECT_EQ(drawing_points(drawing.curves[0]), (Flat{12, 20, 14, 22}));
 }
 
 TEST(SvgDrawing, BadTransformsAreProblemsAndTheElementIsNotDrawn) {
@@ -108,21 +108,21 @@ TEST(SvgDrawing, BadTransformsAreProblemsAndTheElementIsNotDrawn) {
   auto drawing = parse_svg_drawing("<svg><path transform='rotate(' d='M0 0L1 1'/><path d='M0 0L2 2'/></svg>", "t.svg");
   ASSERT_TRUE(drawing);
   ASSERT_EQ(drawing->curves.size(), 1u);  // the second path only
-  EXPECT_EQ(points_of(drawing->curves[0]), (Flat{0, 0, 2, 2}));
+  EXPECT_EQ(drawing_points(drawing->curves[0]), (Flat{0, 0, 2, 2}));
 }
 
 TEST(SvgDrawing, RectWithoutCornersIsFourLines) {
-  const auto drawing = read_valid("<rect id='r' x='1' y='2' width='3' height='4'/>");
+  const auto drawing = read_drawing("<rect id='r' x='1' y='2' width='3' height='4'/>");
   ASSERT_EQ(drawing.curves.size(), 1u);
   const SvgCurve& rect = drawing.curves[0];
   EXPECT_TRUE(rect.closed);
   EXPECT_EQ(rect.element, "rect");
   EXPECT_EQ(rect.id, "r");
   ASSERT_EQ(rect.curve.pieces().size(), 4u);
-  EXPECT_EQ(points_of(rect, 0), (Flat{1, 2, 4, 2}));
-  EXPECT_EQ(points_of(rect, 1), (Flat{4, 2, 4, 6}));
-  EXPECT_EQ(points_of(rect, 2), (Flat{4, 6, 1, 6}));
-  EXPECT_EQ(points_of(rect, 3), (Flat{1, 6, 1, 2}));
+  EXPECT_EQ(drawing_points(rect, 0), (Flat{1, 2, 4, 2}));
+  EXPECT_EQ(drawing_points(rect, 1), (Flat{4, 2, 4, 6}));
+  EXPECT_EQ(drawing_points(rect, 2), (Flat{4, 6, 1, 6}));
+  EXPECT_EQ(drawing_points(rect, 3), (Flat{1, 6, 1, 2}));
 }
 
 /// Every point of the pieces at parameters k/64 lies on the ellipse
@@ -137,33 +137,33 @@ void expect_on_ellipse(const BezierCurve& piece, double cx, double cy, double rx
 }
 
 TEST(SvgDrawing, RoundedRectCornersAreExactQuarterEllipses) {
-  const auto drawing = read_valid("<rect x='0' y='0' width='10' height='6' rx='2' ry='1'/>");
+  const auto drawing = read_drawing("<rect x='0' y='0' width='10' height='6' rx='2' ry='1'/>");
   ASSERT_EQ(drawing.curves.size(), 1u);
   const auto& pieces = drawing.curves[0].curve.pieces();
   ASSERT_EQ(pieces.size(), 8u);  // four edges, four corners
-  EXPECT_EQ(points_of(drawing.curves[0], 0), (Flat{2, 0, 8, 0}));
+  EXPECT_EQ(drawing_points(drawing.curves[0], 0), (Flat{2, 0, 8, 0}));
   EXPECT_TRUE(pieces[1].is_rational());
   expect_on_ellipse(pieces[1], 8, 1, 2, 1, 4e-15);  // top right
   expect_on_ellipse(pieces[3], 8, 5, 2, 1, 4e-15);  // bottom right
   expect_on_ellipse(pieces[5], 2, 5, 2, 1, 4e-15);
   expect_on_ellipse(pieces[7], 2, 1, 2, 1, 4e-15);
   // One radius given: the other takes it (SVG 2 "auto"); too large: clamped to half the side.
-  const auto one = read_valid("<rect width='10' height='6' rx='2'/>");
+  const auto one = read_drawing("<rect width='10' height='6' rx='2'/>");
   expect_on_ellipse(one.curves.at(0).curve.pieces().at(1), 8, 2, 2, 2, 4e-15);
-  const auto clamped = read_valid("<rect width='10' height='6' rx='20' ry='1'/>");
+  const auto clamped = read_drawing("<rect width='10' height='6' rx='20' ry='1'/>");
   const auto& round = clamped.curves.at(0).curve.pieces();
   ASSERT_EQ(round.size(), 8u);
-  EXPECT_EQ(points_of(clamped.curves[0], 0), (Flat{5, 0, 5, 0}));  // the edge shrinks to a point
+  EXPECT_EQ(drawing_points(clamped.curves[0], 0), (Flat{5, 0, 5, 0}));  // the edge shrinks to a point
   expect_on_ellipse(round[1], 5, 1, 5, 1, 4e-15);
 }
 
 TEST(SvgDrawing, CirclesAndEllipsesAreFourExactArcsClockwiseFromTheRight) {
-  const auto drawing = read_valid("<circle cx='3' cy='4' r='5'/><ellipse cx='-1' cy='2' rx='4' ry='0.5'/>");
+  const auto drawing = read_drawing("<circle cx='3' cy='4' r='5'/><ellipse cx='-1' cy='2' rx='4' ry='0.5'/>");
   ASSERT_EQ(drawing.curves.size(), 2u);
   const auto& circle = drawing.curves[0];
   EXPECT_TRUE(circle.closed);
   ASSERT_EQ(circle.curve.pieces().size(), 4u);
-  EXPECT_EQ(points_of(circle, 0).front(), 8.0);
+  EXPECT_EQ(drawing_points(circle, 0).front(), 8.0);
   // SVG 2 §10.3: starts at (cx + r, cy), then (cx, cy + r): clockwise on screen.
   const Point quarter = point_at(circle.curve.pieces()[0], 1.0);
   EXPECT_NEAR(quarter[0], 3.0, 4e-15);
@@ -173,19 +173,19 @@ TEST(SvgDrawing, CirclesAndEllipsesAreFourExactArcsClockwiseFromTheRight) {
 }
 
 TEST(SvgDrawing, LinesPolylinesAndPolygons) {
-  const auto drawing = read_valid(
+  const auto drawing = read_drawing(
       "<line x1='1' y1='2' x2='3' y2='4'/><polyline points='0,0 1,1 2,0'/><polygon points='0 0,4 0 4 3'/>");
   ASSERT_EQ(drawing.curves.size(), 3u);
-  EXPECT_EQ(points_of(drawing.curves[0]), (Flat{1, 2, 3, 4}));
+  EXPECT_EQ(drawing_points(drawing.curves[0]), (Flat{1, 2, 3, 4}));
   EXPECT_FALSE(drawing.curves[1].closed);
   EXPECT_EQ(drawing.curves[1].curve.pieces().size(), 2u);
   EXPECT_TRUE(drawing.curves[2].closed);
   ASSERT_EQ(drawing.curves[2].curve.pieces().size(), 3u);
-  EXPECT_EQ(points_of(drawing.curves[2], 2), (Flat{4, 3, 0, 0}));
+  EXPECT_EQ(drawing_points(drawing.curves[2], 2), (Flat{4, 3, 0, 0}));
 }
 
 TEST(SvgDrawing, ShapesOfZeroSizeDrawNothingAndNegativeSizesAreProblems) {
-  const auto none = read_valid("<rect width='0' height='5'/><circle r='0'/><ellipse rx='1' ry='0'/>");
+  const auto none = read_drawing("<rect width='0' height='5'/><circle r='0'/><ellipse rx='1' ry='0'/>");
   EXPECT_TRUE(none.curves.empty());
   EXPECT_EQ(problems_of("<rect width='-1' height='5'/>"),
             std::vector<std::string>{"t.svg, line 2, <rect>: a negative width (-1)"});
@@ -207,17 +207,17 @@ TEST(SvgDrawing, PathDataIsDrawnUpToItsFirstError) {
 }
 
 TEST(SvgDrawing, LengthUnitsAndPercentages) {
-  const auto drawing = read_valid("<rect width='1in' height='2.54cm'/><line x2='72pt' y2='6pc'/>"
+  const auto drawing = read_drawing("<rect width='1in' height='2.54cm'/><line x2='72pt' y2='6pc'/>"
                                   "<line x1='25.4mm' x2='101.6Q'/>");
   ASSERT_EQ(drawing.curves.size(), 3u);
-  EXPECT_EQ(points_of(drawing.curves[0], 1), (Flat{96, 0, 96, 96}));
-  expect_near(points_of(drawing.curves[1]), {0, 0, 96, 96}, 1e-13);
-  expect_near(points_of(drawing.curves[2]), {96, 0, 96, 0}, 1e-13);
-  const auto percent = read_valid("<rect width='50%' height='25%'/><circle r='10%'/>",
+  EXPECT_EQ(drawing_points(drawing.curves[0], 1), (Flat{96, 0, 96, 96}));
+  expect_near(drawing_points(drawing.curves[1]), {0, 0, 96, 96}, 1e-13);
+  expect_near(drawing_points(drawing.curves[2]), {96, 0, 96, 0}, 1e-13);
+  const auto percent = read_drawing("<rect width='50%' height='25%'/><circle r='10%'/>",
                                   "<svg viewBox='0 0 200 100'>");
-  EXPECT_EQ(points_of(percent.curves.at(0), 1), (Flat{100, 0, 100, 25}));
+  EXPECT_EQ(drawing_points(percent.curves.at(0), 1), (Flat{100, 0, 100, 25}));
   // r: 10% of sqrt((200² + 100²) / 2).
-  EXPECT_NEAR(points_of(percent.curves.at(1), 0)[0], 0.1 * std::sqrt((200.0 * 200 + 100 * 100) / 2), 1e-12);
+  EXPECT_NEAR(drawing_points(percent.curves.at(1), 0)[0], 0.1 * std::sqrt((200.0 * 200 + 100 * 100) / 2), 1e-12);
   EXPECT_EQ(problems_of("<rect width='2em' height='1'/>"),
             std::vector<std::string>{"t.svg, line 2, <rect>: width, character 2 ('e'): '2em': em and ex lengths "
                                      "depend on fonts, casteljau reads px, in, cm, mm, Q, pt, pc and %"});
@@ -228,24 +228,24 @@ TEST(SvgDrawing, LengthUnitsAndPercentages) {
 
 TEST(SvgDrawing, MillimetresThroughTheRootsSizeAndViewBox) {
   const std::string body = "<path d='M0 0L200 100'/>";
-  const auto user = read_valid(body, "<svg width='100mm' height='50mm' viewBox='0 0 200 100'>");
-  EXPECT_EQ(points_of(user.curves.at(0)), (Flat{0, 0, 200, 100}));  // user units: the root's map not applied
-  const auto mm = read_valid(body, "<svg width='100mm' height='50mm' viewBox='0 0 200 100'>", DrawingUnits::millimetres);
-  expect_near(points_of(mm.curves.at(0)), {0, 0, 100, 50});
+  const auto user = read_drawing(body, "<svg width='100mm' height='50mm' viewBox='0 0 200 100'>");
+  EXPECT_EQ(drawing_points(user.curves.at(0)), (Flat{0, 0, 200, 100}));  // user units: the root's map not applied
+  const auto mm = read_drawing(body, "<svg width='100mm' height='50mm' viewBox='0 0 200 100'>", DrawingUnits::millimetres);
+  expect_near(drawing_points(mm.curves.at(0)), {0, 0, 100, 50});
   EXPECT_EQ(mm.units, DrawingUnits::millimetres);
   // A square viewport: xMidYMid meet scales by 0.5 and centres vertically.
-  const auto meet = read_valid(body, "<svg width='100mm' height='100mm' viewBox='0 0 200 100'>",
+  const auto meet = read_drawing(body, "<svg width='100mm' height='100mm' viewBox='0 0 200 100'>",
                                DrawingUnits::millimetres);
-  expect_near(points_of(meet.curves.at(0)), {0, 25, 100, 75});
-  const auto none = read_valid(body, "<svg width='100mm' height='100mm' viewBox='0 0 200 100' "
+  expect_near(drawing_points(meet.curves.at(0)), {0, 25, 100, 75});
+  const auto none = read_drawing(body, "<svg width='100mm' height='100mm' viewBox='0 0 200 100' "
                                      "preserveAspectRatio='none'>", DrawingUnits::millimetres);
-  expect_near(points_of(none.curves.at(0)), {0, 0, 100, 100});
-  const auto slice = read_valid(body, "<svg width='100mm' height='100mm' viewBox='0 0 200 100' "
+  expect_near(drawing_points(none.curves.at(0)), {0, 0, 100, 100});
+  const auto slice = read_drawing(body, "<svg width='100mm' height='100mm' viewBox='0 0 200 100' "
                                       "preserveAspectRatio='xMinYMin slice'>", DrawingUnits::millimetres);
-  expect_near(points_of(slice.curves.at(0)), {0, 0, 200, 100});
+  expect_near(drawing_points(slice.curves.at(0)), {0, 0, 200, 100});
   // No viewBox: a user unit is a CSS pixel, 25.4 / 96 mm.
-  const auto pixels = read_valid(body, "<svg width='960' height='480'>", DrawingUnits::millimetres);
-  expect_near(points_of(pixels.curves.at(0)), {0, 0, 200 * 25.4 / 96, 100 * 25.4 / 96});
+  const auto pixels = read_drawing(body, "<svg width='960' height='480'>", DrawingUnits::millimetres);
+  expect_near(drawing_points(pixels.curves.at(0)), {0, 0, 200 * 25.4 / 96, 100 * 25.4 / 96});
   auto unsized = parse_svg_drawing("<svg viewBox='0 0 10 10'><path d='M0 0L1 1'/></svg>", "t.svg",
                                    DrawingUnits::millimetres);
   ASSERT_FALSE(unsized);
@@ -258,26 +258,26 @@ TEST(SvgDrawing, MillimetresThroughTheRootsSizeAndViewBox) {
 }
 
 TEST(SvgDrawing, NestedViewportsAndUse) {
-  const auto nested = read_valid("<svg x='10' y='10' width='20' height='20' viewBox='0 0 2 2'><path d='M0 0L2 2'/></svg>");
-  expect_near(points_of(nested.curves.at(0)), {10, 10, 30, 30});
+  const auto nested = read_drawing("<svg x='10' y='10' width='20' height='20' viewBox='0 0 2 2'><path d='M0 0L2 2'/></svg>");
+  expect_near(drawing_points(nested.curves.at(0)), {10, 10, 30, 30});
   // In a root of unknown size, a nested svg without a size only moves its content.
-  const auto unsized = read_valid("<svg x='2' y='3'><path d='M0 0L1 1'/></svg>");
-  EXPECT_EQ(points_of(unsized.curves.at(0)), (Flat{2, 3, 3, 4}));
+  const auto unsized = read_drawing("<svg x='2' y='3'><path d='M0 0L1 1'/></svg>");
+  EXPECT_EQ(drawing_points(unsized.curves.at(0)), (Flat{2, 3, 3, 4}));
   EXPECT_EQ(problems_of("<svg viewBox='0 0 1 1'><path d='M0 0L1 1'/></svg>"),
             std::vector<std::string>{"t.svg, line 2, <svg>: a viewBox needs the viewport's width and height, which "
                                      "neither this element nor its viewport gives"});
-  const auto use = read_valid(
+  const auto use = read_drawing(
       "<defs><path id='p' d='M0 0L1 0'/></defs><use href='#p' x='5' y='6'/>"
       "<use xlink:href='#p' transform='scale(2)' x='1'/>",
       "<svg xmlns='http://www.w3.org/2000/svg' xmlns:xlink='http://www.w3.org/1999/xlink'>");
   ASSERT_EQ(use.curves.size(), 2u);  // the path in <defs> itself is not drawn
-  EXPECT_EQ(points_of(use.curves[0]), (Flat{5, 6, 6, 6}));
-  EXPECT_EQ(points_of(use.curves[1]), (Flat{2, 0, 4, 0}));  // transform, then x: scale(2) translate(1)
+  EXPECT_EQ(drawing_points(use.curves[0]), (Flat{5, 6, 6, 6}));
+  EXPECT_EQ(drawing_points(use.curves[1]), (Flat{2, 0, 4, 0}));  // transform, then x: scale(2) translate(1)
   EXPECT_EQ(use.curves[0].id, "p");
-  const auto symbol = read_valid(
+  const auto symbol = read_drawing(
       "<symbol id='s' viewBox='0 0 1 1'><path d='M0 0L1 1'/></symbol><use href='#s' x='3' width='10' height='10'/>");
   ASSERT_EQ(symbol.curves.size(), 1u);
-  expect_near(points_of(symbol.curves[0]), {3, 0, 13, 10});
+  expect_near(drawing_points(symbol.curves[0]), {3, 0, 13, 10});
   EXPECT_EQ(problems_of("<g id='g'><use href='#g'/></g>"),
             std::vector<std::string>{"t.svg, line 2, <use>: refers to '#g', which contains this <use> (a cycle)"});
   EXPECT_EQ(problems_of("<use href='#nothing'/>"),
@@ -285,20 +285,20 @@ TEST(SvgDrawing, NestedViewportsAndUse) {
 }
 
 TEST(SvgDrawing, HiddenAndSkippedElements) {
-  const auto drawing = read_valid(
+  const auto drawing = read_drawing(
       "<path display='none' d='M0 0L1 1'/><g style='display:none'><path d='M0 0L1 1'/></g>"
       "<g visibility='hidden'><path d='M0 0L1 1'/><path visibility='visible' d='M0 0L3 3'/></g>"
       "<text>hello</text><image href='x.png'/><clipPath><rect width='1' height='1'/></clipPath>"
       "<unknown><path d='M9 9L1 1'/></unknown>");
   ASSERT_EQ(drawing.curves.size(), 1u);
-  EXPECT_EQ(points_of(drawing.curves[0]), (Flat{0, 0, 3, 3}));
+  EXPECT_EQ(drawing_points(drawing.curves[0]), (Flat{0, 0, 3, 3}));
   ASSERT_EQ(drawing.skipped.size(), 2u);
   EXPECT_EQ(drawing.skipped[0], "line 1: <text> (text is not read: convert it to paths)");
   EXPECT_EQ(drawing.skipped[1], "line 1: <image> (not vector geometry)");
 }
 
 TEST(SvgDrawing, StyleAndMetadata) {
-  const auto drawing = read_valid(
+  const auto drawing = read_drawing(
       "<g stroke-width='2' fill-rule='evenodd' transform='scale(3)'>"
       "<path id='a' d='M0 0L1 1'/><path style='fill-rule: nonzero; stroke-width:0.5px' fill-rule='evenodd' "
       "d='M0 0L1 1'/></g><path stroke-width='1mm' d='M0 0L1 1'/>");

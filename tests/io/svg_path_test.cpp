@@ -24,7 +24,7 @@ namespace casteljau {
 namespace {
 
 /// The control points of piece `piece` of subpath `subpath`, flat.
-std::vector<double> points_of(const SvgPathData& path, std::size_t subpath, std::size_t piece) {
+std::vector<double> path_points(const SvgPathData& path, std::size_t subpath, std::size_t piece) {
   const auto& pieces = path.subpaths.at(subpath).curve.pieces();
   const auto coordinates = pieces.at(piece).control_points().coordinates();
   return {coordinates.begin(), coordinates.end()};
@@ -34,7 +34,7 @@ std::size_t pieces_of(const SvgPathData& path, std::size_t subpath) {
   return path.subpaths.at(subpath).curve.pieces().size();
 }
 
-SvgPathData read_valid(std::string_view data) {
+SvgPathData read_path(std::string_view data) {
   SvgPathData path = read_svg_path(data);
   EXPECT_FALSE(path.error.has_value()) << data << ": " << path.error->message;
   return path;
@@ -43,76 +43,76 @@ SvgPathData read_valid(std::string_view data) {
 using Flat = std::vector<double>;
 
 TEST(SvgPath, LinesAbsoluteAndRelative) {
-  const auto path = read_valid("M10 20 L30 40 l5 -5 H0 h1 V2 v-2");
+  const auto path = read_path("M10 20 L30 40 l5 -5 H0 h1 V2 v-2");
   ASSERT_EQ(path.subpaths.size(), 1u);
   ASSERT_EQ(pieces_of(path, 0), 6u);
-  EXPECT_EQ(points_of(path, 0, 0), (Flat{10, 20, 30, 40}));
-  EXPECT_EQ(points_of(path, 0, 1), (Flat{30, 40, 35, 35}));
-  EXPECT_EQ(points_of(path, 0, 2), (Flat{35, 35, 0, 35}));
-  EXPECT_EQ(points_of(path, 0, 3), (Flat{0, 35, 1, 35}));
-  EXPECT_EQ(points_of(path, 0, 4), (Flat{1, 35, 1, 2}));
-  EXPECT_EQ(points_of(path, 0, 5), (Flat{1, 2, 1, 0}));
+  EXPECT_EQ(path_points(path, 0, 0), (Flat{10, 20, 30, 40}));
+  EXPECT_EQ(path_points(path, 0, 1), (Flat{30, 40, 35, 35}));
+  EXPECT_EQ(path_points(path, 0, 2), (Flat{35, 35, 0, 35}));
+  EXPECT_EQ(path_points(path, 0, 3), (Flat{0, 35, 1, 35}));
+  EXPECT_EQ(path_points(path, 0, 4), (Flat{1, 35, 1, 2}));
+  EXPECT_EQ(path_points(path, 0, 5), (Flat{1, 2, 1, 0}));
   EXPECT_FALSE(path.subpaths[0].closed);
 }
 
 TEST(SvgPath, ImplicitRepeatsAfterAMovetoAreLinetos) {
-  const auto absolute = read_valid("M0 0 1 1 2 0");
+  const auto absolute = read_path("M0 0 1 1 2 0");
   ASSERT_EQ(pieces_of(absolute, 0), 2u);
-  EXPECT_EQ(points_of(absolute, 0, 1), (Flat{1, 1, 2, 0}));
-  const auto relative = read_valid("m1 1 2 2 1 0");  // a first m is relative to the origin
+  EXPECT_EQ(path_points(absolute, 0, 1), (Flat{1, 1, 2, 0}));
+  const auto relative = read_path("m1 1 2 2 1 0");  // a first m is relative to the origin
   ASSERT_EQ(pieces_of(relative, 0), 2u);
-  EXPECT_EQ(points_of(relative, 0, 0), (Flat{1, 1, 3, 3}));
-  EXPECT_EQ(points_of(relative, 0, 1), (Flat{3, 3, 4, 3}));
-  const auto cubics = read_valid("M0 0 c1 1 2 1 3 0 1 -1 2 -1 3 0");
+  EXPECT_EQ(path_points(relative, 0, 0), (Flat{1, 1, 3, 3}));
+  EXPECT_EQ(path_points(relative, 0, 1), (Flat{3, 3, 4, 3}));
+  const auto cubics = read_path("M0 0 c1 1 2 1 3 0 1 -1 2 -1 3 0");
   ASSERT_EQ(pieces_of(cubics, 0), 2u);
-  EXPECT_EQ(points_of(cubics, 0, 1), (Flat{3, 0, 4, -1, 5, -1, 6, 0}));
+  EXPECT_EQ(path_points(cubics, 0, 1), (Flat{3, 0, 4, -1, 5, -1, 6, 0}));
 }
 
 TEST(SvgPath, NumbersAsTheGrammarReadsThem) {
-  EXPECT_EQ(points_of(read_valid("M1.5.5L-1e2-1E-1"), 0, 0), (Flat{1.5, 0.5, -100, -0.1}));
-  EXPECT_EQ(points_of(read_valid("M.5-.5L+1,+2"), 0, 0), (Flat{0.5, -0.5, 1, 2}));
-  EXPECT_EQ(points_of(read_valid("M0,0L1.e1,2E+1"), 0, 0), (Flat{0, 0, 10, 20}));
-  EXPECT_EQ(points_of(read_valid("\tM 0 0\n\r\fL 3 , 4 "), 0, 0), (Flat{0, 0, 3, 4}));
+  EXPECT_EQ(path_points(read_path("M1.5.5L-1e2-1E-1"), 0, 0), (Flat{1.5, 0.5, -100, -0.1}));
+  EXPECT_EQ(path_points(read_path("M.5-.5L+1,+2"), 0, 0), (Flat{0.5, -0.5, 1, 2}));
+  EXPECT_EQ(path_points(read_path("M0,0L1.e1,2E+1"), 0, 0), (Flat{0, 0, 10, 20}));
+  EXPECT_EQ(path_points(read_path("\tM 0 0\n\r\fL 3 , 4 "), 0, 0), (Flat{0, 0, 3, 4}));
 }
 
 TEST(SvgPath, SmoothCubicsReflectThePreviousSecondControlPoint) {
-  const auto path = read_valid("M0 0 C1 2 3 2 4 0 S7 -2 8 0 s3 2 4 0");
+  const auto path = read_path("M0 0 C1 2 3 2 4 0 S7 -2 8 0 s3 2 4 0");
   ASSERT_EQ(pieces_of(path, 0), 3u);
-  EXPECT_EQ(points_of(path, 0, 1), (Flat{4, 0, 5, -2, 7, -2, 8, 0}));
-  EXPECT_EQ(points_of(path, 0, 2), (Flat{8, 0, 9, 2, 11, 2, 12, 0}));
+  EXPECT_EQ(path_points(path, 0, 1), (Flat{4, 0, 5, -2, 7, -2, 8, 0}));
+  EXPECT_EQ(path_points(path, 0, 2), (Flat{8, 0, 9, 2, 11, 2, 12, 0}));
   // After another command the first control point is the current point.
-  EXPECT_EQ(points_of(read_valid("M0 0 L1 1 S2 2 3 3"), 0, 1), (Flat{1, 1, 1, 1, 2, 2, 3, 3}));
-  EXPECT_EQ(points_of(read_valid("M0 0 Q1 1 2 0 S3 1 4 0"), 0, 1), (Flat{2, 0, 2, 0, 3, 1, 4, 0}));
+  EXPECT_EQ(path_points(read_path("M0 0 L1 1 S2 2 3 3"), 0, 1), (Flat{1, 1, 1, 1, 2, 2, 3, 3}));
+  EXPECT_EQ(path_points(read_path("M0 0 Q1 1 2 0 S3 1 4 0"), 0, 1), (Flat{2, 0, 2, 0, 3, 1, 4, 0}));
 }
 
 TEST(SvgPath, SmoothQuadraticsChainTheirReflections) {
-  const auto path = read_valid("M0 0 Q1 1 2 0 T4 0 t2 0");
+  const auto path = read_path("M0 0 Q1 1 2 0 T4 0 t2 0");
   ASSERT_EQ(pieces_of(path, 0), 3u);
-  EXPECT_EQ(points_of(path, 0, 0), (Flat{0, 0, 1, 1, 2, 0}));
-  EXPECT_EQ(points_of(path, 0, 1), (Flat{2, 0, 3, -1, 4, 0}));
-  EXPECT_EQ(points_of(path, 0, 2), (Flat{4, 0, 5, 1, 6, 0}));
-  EXPECT_EQ(points_of(read_valid("M0 0 L1 0 T2 2"), 0, 1), (Flat{1, 0, 1, 0, 2, 2}));
-  EXPECT_EQ(points_of(read_valid("M0 0 C1 1 2 1 3 0 T5 0"), 0, 1), (Flat{3, 0, 3, 0, 5, 0}));
+  EXPECT_EQ(path_points(path, 0, 0), (Flat{0, 0, 1, 1, 2, 0}));
+  EXPECT_EQ(path_points(path, 0, 1), (Flat{2, 0, 3, -1, 4, 0}));
+  EXPECT_EQ(path_points(path, 0, 2), (Flat{4, 0, 5, 1, 6, 0}));
+  EXPECT_EQ(path_points(read_path("M0 0 L1 0 T2 2"), 0, 1), (Flat{1, 0, 1, 0, 2, 2}));
+  EXPECT_EQ(path_points(read_path("M0 0 C1 1 2 1 3 0 T5 0"), 0, 1), (Flat{3, 0, 3, 0, 5, 0}));
 }
 
 TEST(SvgPath, ClosepathDrawsBackAndTheNextSubpathStartsThere) {
-  const auto path = read_valid("M0 0 L1 0 L1 1 Z L0 1 m2 2 l1 0 z");
+  const auto path = read_path("M0 0 L1 0 L1 1 Z L0 1 m2 2 l1 0 z");
   ASSERT_EQ(path.subpaths.size(), 3u);
   EXPECT_TRUE(path.subpaths[0].closed);
   ASSERT_EQ(pieces_of(path, 0), 3u);
-  EXPECT_EQ(points_of(path, 0, 2), (Flat{1, 1, 0, 0}));
+  EXPECT_EQ(path_points(path, 0, 2), (Flat{1, 1, 0, 0}));
   EXPECT_FALSE(path.subpaths[1].closed);
-  EXPECT_EQ(points_of(path, 1, 0), (Flat{0, 0, 0, 1}));
+  EXPECT_EQ(path_points(path, 1, 0), (Flat{0, 0, 0, 1}));
   // m after the open subpath is relative to its end (0, 1).
-  EXPECT_EQ(points_of(path, 2, 0), (Flat{2, 3, 3, 3}));
-  EXPECT_EQ(points_of(path, 2, 1), (Flat{3, 3, 2, 3}));
+  EXPECT_EQ(path_points(path, 2, 0), (Flat{2, 3, 3, 3}));
+  EXPECT_EQ(path_points(path, 2, 1), (Flat{3, 3, 2, 3}));
   // A closepath at the start point adds no line; a lone moveto draws nothing.
-  const auto square = read_valid("M0 0 H1 V1 H0 V0 Z M5 5");
+  const auto square = read_path("M0 0 H1 V1 H0 V0 Z M5 5");
   ASSERT_EQ(square.subpaths.size(), 1u);
   EXPECT_EQ(pieces_of(square, 0), 4u);
   EXPECT_TRUE(square.subpaths[0].closed);
-  EXPECT_TRUE(read_valid("").subpaths.empty());
-  EXPECT_TRUE(read_valid("  M1 2  ").subpaths.empty());
+  EXPECT_TRUE(read_path("").subpaths.empty());
+  EXPECT_TRUE(read_path("  M1 2  ").subpaths.empty());
 }
 
 /// The largest |distance from `center` - radius| over samples of every piece.
@@ -129,7 +129,7 @@ double off_circle(const SvgSubpath& subpath, double cx, double cy, double radius
 
 TEST(SvgPath, TheSpecificationsThreeQuarterArc) {
   // SVG 1.1 §8.3.8's arcs01: centre (300, 200), radius 150, large arc, sweep 0.
-  const auto path = read_valid("M300,200 h-150 a150,150 0 1,0 150,-150 z");
+  const auto path = read_path("M300,200 h-150 a150,150 0 1,0 150,-150 z");
   ASSERT_EQ(path.subpaths.size(), 1u);
   const SvgSubpath& shape = path.subpaths[0];
   EXPECT_TRUE(shape.closed);
@@ -138,7 +138,7 @@ TEST(SvgPath, TheSpecificationsThreeQuarterArc) {
                                              shape.curve.pieces()[3]}).value()};
   EXPECT_LE(off_circle(arc, 300, 200, 150), 1e-12 * 300);
   // Sweep 0 turns the negative way: from (150, 200) through (300, 350) and (450, 200).
-  const auto joint = [&](std::size_t piece) { return points_of(path, 0, piece); };
+  const auto joint = [&](std::size_t piece) { return path_points(path, 0, piece); };
   EXPECT_NEAR(joint(2)[0], 300, 1e-12 * 300);
   EXPECT_NEAR(joint(2)[1], 350, 1e-12 * 300);
   EXPECT_NEAR(joint(3)[0], 450, 1e-12 * 300);
@@ -153,25 +153,25 @@ TEST(SvgPath, TheSpecificationsThreeQuarterArc) {
 TEST(SvgPath, ArcFlagsNeedNoSeparatorsAndSmallRadiiGrow) {
   // rx = ry = 1 is too small for ends 10 apart: scaled to 5, a half circle
   // around (5, 0); sweep 1 turns the positive way, through (5, -5).
-  const auto path = read_valid("M0 0a1 1 0 1110 0");
+  const auto path = read_path("M0 0a1 1 0 1110 0");
   ASSERT_EQ(pieces_of(path, 0), 2u);
   EXPECT_LE(off_circle(path.subpaths[0], 5, 0, 5), 1e-12 * 10);
-  const Flat middle = points_of(path, 0, 1);
+  const Flat middle = path_points(path, 0, 1);
   EXPECT_NEAR(middle[0], 5, 1e-14);
   EXPECT_NEAR(middle[1], -5, 1e-14);
   EXPECT_EQ(middle[4], 10);
   // Negative radii count by their size.
-  EXPECT_EQ(points_of(read_valid("M0 0a-1 -1 0 1110 0"), 0, 1), middle);
+  EXPECT_EQ(path_points(read_path("M0 0a-1 -1 0 1110 0"), 0, 1), middle);
 }
 
 TEST(SvgPath, DegenerateArcs) {
   // A zero radius is a straight line; ends that coincide omit the arc.
-  const auto line = read_valid("M0 0 A0 5 0 0 1 10 0");
+  const auto line = read_path("M0 0 A0 5 0 0 1 10 0");
   ASSERT_EQ(pieces_of(line, 0), 1u);
-  EXPECT_EQ(points_of(line, 0, 0), (Flat{0, 0, 10, 0}));
-  const auto omitted = read_valid("M0 0 A5 5 0 0 1 0 0 L1 1");
+  EXPECT_EQ(path_points(line, 0, 0), (Flat{0, 0, 10, 0}));
+  const auto omitted = read_path("M0 0 A5 5 0 0 1 0 0 L1 1");
   ASSERT_EQ(pieces_of(omitted, 0), 1u);
-  EXPECT_EQ(points_of(omitted, 0, 0), (Flat{0, 0, 1, 1}));
+  EXPECT_EQ(path_points(omitted, 0, 0), (Flat{0, 0, 1, 1}));
 }
 
 /// SVG's centre parameterization (implementation notes B.2.4 and B.2.5),

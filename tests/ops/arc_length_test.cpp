@@ -18,15 +18,14 @@
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/nurbs/conics.hpp"
 #include "support/bspline_generators.hpp"
+#include "support/make.hpp"
 
 namespace casteljau {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::bezier;
 
-BezierCurve bezier(const std::vector<std::vector<double>>& points, std::vector<double> weights = {}) {
-  return BezierCurve::make(PointArray::make(points).value(), std::move(weights)).value();
-}
+constexpr double kPi = std::numbers::pi;
 
 /// Length of y = x^2 from 0 to x.
 double parabola_length(double x) { return 0.5 * x * std::sqrt(1 + 4 * x * x) + 0.25 * std::asinh(2 * x); }

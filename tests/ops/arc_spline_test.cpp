@@ -20,15 +20,15 @@
 #include "casteljau/interpolation/spline_interpolation.hpp"
 #include "casteljau/nurbs/conics.hpp"
 #include "casteljau/ops/closest_point.hpp"
+#include "support/examples_dir.hpp"
+#include "support/generators.hpp"
 
 namespace casteljau {
 namespace {
 
-std::filesystem::path examples_dir() { return CASTELJAU_EXAMPLES_DIR; }
-
 /// The x,y rows of an examples/ CSV (comment and header lines skipped).
 PointArray example_points(const std::string& name) {
-  std::ifstream in(examples_dir() / name);
+  std::ifstream in(test::examples_dir() / name);
   EXPECT_TRUE(in) << name;
   std::vector<double> xy;
   std::string line;
@@ -281,13 +281,9 @@ TEST(FitArcs, ADegreeSevenBezier) {
 
 // ---- property: random plane cubics, rational or not --------------------------
 
-rc::Gen<double> coordinate() {
-  return rc::gen::map(rc::gen::inRange(-1000, 1001), [](int k) { return k / 10.0; });
-}
-
 RC_GTEST_PROP(FitArcs, RandomCubicsAreWithinTolerance, ()) {
   std::vector<double> xy;
-  for (int i = 0; i < 8; ++i) xy.push_back(*coordinate());
+  for (int i = 0; i < 8; ++i) xy.push_back(*test::coordinate_on_grid(10));
   std::vector<double> weights;
   if (*rc::gen::inRange(0, 3) == 0)
     for (int i = 0; i < 4; ++i) weights.push_back(*rc::gen::map(rc::gen::inRange(2, 41), [](int k) { return k / 10.0; }));

@@ -22,15 +22,14 @@
 #include "casteljau/bspline/knot_vector.hpp"
 #include "casteljau/nurbs/conics.hpp"
 #include "support/bspline_generators.hpp"
+#include "support/make.hpp"
 #include "support/nearest_oracle.hpp"
 #include "support/splitmix.hpp"
 
 namespace casteljau {
 namespace {
 
-BezierCurve bezier(const std::vector<std::vector<double>>& rows, std::vector<double> weights = {}) {
-  return BezierCurve::make(PointArray::make(rows).value(), std::move(weights)).value();
-}
+using test::bezier;
 
 /// Distance between two doubles in units in the last place.
 double ulps(double x, double reference) {

@@ -28,11 +28,13 @@
 #include "casteljau/nurbs/conics.hpp"
 #include "casteljau/ops/inflections.hpp"
 #include "support/bspline_generators.hpp"
+#include "support/make.hpp"
 #include "support/power_curves.hpp"
 
 namespace casteljau {
 namespace {
 
+using test::bezier;
 using test::polynomial_graph;
 using test::power_curve;
 
@@ -41,10 +43,6 @@ std::vector<double> shifted_power(double c, int k) {
   std::vector<double> a(k + 1);
   for (int j = 0; j <= k; ++j) a[j] = binomial(k, j) * std::pow(-c, k - j);
   return a;
-}
-
-BezierCurve bezier(const std::vector<std::vector<double>>& rows) {
-  return BezierCurve::make(PointArray::make(rows).value()).value();
 }
 
 TEST(CurvatureExtrema, OfTheCubicGraphAndTheParabola) {

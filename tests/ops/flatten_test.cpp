@@ -18,7 +18,9 @@
 #include "casteljau/bezier/bezier_curve.hpp"
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/ops/flatten.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "support/bspline_generators.hpp"
+#include "support/generators.hpp"
 
 namespace casteljau {
 namespace {
@@ -111,14 +113,9 @@ void check_polyline(const BezierCurve& curve, double tolerance, const Polyline& 
 
 // ---- generators ---------------------------------------------------------------
 
-/// Coordinates in [-100, 100] on a 0.01 grid (exactly repeatable, coincident points likely enough).
-rc::Gen<double> coordinate() {
-  return rc::gen::map(rc::gen::inRange(-10000, 10001), [](int k) { return k / 100.0; });
-}
-
 BezierCurve random_curve(int degree, int dimension, bool rational) {
   std::vector<double> xs;
-  for (int i = 0; i < (degree + 1) * dimension; ++i) xs.push_back(*coordinate());
+  for (int i = 0; i < (degree + 1) * dimension; ++i) xs.push_back(*test::coordinate_on_grid(100));
   std::vector<double> weights;
   if (rational)
     for (int i = 0; i <= degree; ++i) weights.push_back(*rc::gen::map(rc::gen::inRange(1, 101), [](int k) { return k / 10.0; }));

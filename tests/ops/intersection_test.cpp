@@ -22,14 +22,13 @@
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/nurbs/conics.hpp"
+#include "support/make.hpp"
 #include "support/power_curves.hpp"
 
 namespace casteljau {
 namespace {
 
-BezierCurve bezier(const std::vector<std::vector<double>>& rows) {
-  return BezierCurve::make(PointArray::make(rows).value()).value();
-}
+using test::bezier;
 
 /// Both curves by reference, so a test may pass temporaries (a CurveView
 /// cannot be made of one: docs/cpp.md, "Lifetimes").

@@ -19,7 +19,7 @@
 namespace casteljau {
 namespace {
 
-double norm(const std::vector<double>& p) { return std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]); }
+double euclidean_norm(const std::vector<double>& p) { return std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]); }
 
 TEST(PointInversion, OnTheSphereIsAlongTheRayPolesIncluded) {
   const std::vector<double> centre{1.0, -2.0, 0.5};
@@ -29,10 +29,10 @@ TEST(PointInversion, OnTheSphereIsAlongTheRayPolesIncluded) {
   for (int i = 0; i < 500; ++i) {
     std::vector<double> q(3);
     for (double& x : q) x = 8 * random.unit() - 4;
-    const double r = norm({q[0] - centre[0], q[1] - centre[1], q[2] - centre[2]});
+    const double r = euclidean_norm({q[0] - centre[0], q[1] - centre[1], q[2] - centre[2]});
     const SurfaceNearestPoint nearest = closest_point(sphere, q).value();
     worst = std::max(worst, std::abs(nearest.distance - std::abs(r - 2.0)));
-    EXPECT_NEAR(norm({nearest.point[0] - q[0], nearest.point[1] - q[1], nearest.point[2] - q[2]}), nearest.distance, 1e-12);
+    EXPECT_NEAR(euclidean_norm({nearest.point[0] - q[0], nearest.point[1] - q[1], nearest.point[2] - q[2]}), nearest.distance, 1e-12);
   }
   EXPECT_LT(worst, 1e-12);
   // Straight above a pole: the pole itself, at distance 3.

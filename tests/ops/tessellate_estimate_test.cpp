@@ -7,7 +7,7 @@
 // - a lower bound on what tessellate() produces: twice the estimated cells
 //   never exceed the triangles of the mesh, on a sphere, a torus, a bicubic
 //   patch and a paraboloid (the ratios, printed as test properties, are what
-//   kMeshEstimateMargin in core/tolerance.hpp is measured from);
+//   kMeshEstimateMargin in ops/tolerance.hpp is measured from);
 // - tolerance_for inverts cells(): the estimate at the tolerance it gives is
 //   the requested count (to its precision), and a flat patch fits at any.
 
@@ -19,6 +19,7 @@
 
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/ops/tessellate.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "casteljau/surfaces/bezier_surface.hpp"
 #include "casteljau/surfaces/revolution.hpp"
 #include "casteljau/surfaces/surface_view.hpp"

@@ -29,6 +29,7 @@
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/tessellate.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "casteljau/surfaces/bezier_surface.hpp"
 #include "casteljau/surfaces/bspline_surface.hpp"
 #include "casteljau/surfaces/coons.hpp"

@@ -14,19 +14,16 @@
 #include <vector>
 
 #include "casteljau/bezier/bernstein.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/render/layout.hpp"
 #include "casteljau/render/plots.hpp"
 #include "support/exact.hpp"
+#include "support/plane_geometry.hpp"
 
 namespace casteljau::render {
 namespace {
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double length2 = ab[0] * ab[0] + ab[1] * ab[1];
-  const double u = length2 > 0.0 ? std::clamp(((p[0] - a[0]) * ab[0] + (p[1] - a[1]) * ab[1]) / length2, 0.0, 1.0) : 0.0;
-  return distance(p, a + u * ab);
-}
+using test::distance_to_segment;
 
 /// A parameter in [0, 1] on a 1e-6 grid.
 rc::Gen<double> parameter() {

@@ -14,6 +14,7 @@
 #include "casteljau/interpolation/parameterization.hpp"
 #include "casteljau/render/layout.hpp"
 #include "casteljau/render/plots.hpp"
+#include "casteljau/render/tolerance.hpp"
 #include "support/generators.hpp"
 
 namespace casteljau::render {

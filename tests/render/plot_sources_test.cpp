@@ -9,6 +9,7 @@
 
 #include "casteljau/render/layout.hpp"
 #include "casteljau/render/plots.hpp"
+#include "casteljau/render/tolerance.hpp"
 
 namespace casteljau::render {
 namespace {

@@ -17,10 +17,14 @@
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/render/layout.hpp"
 #include "casteljau/render/plots.hpp"
+#include "casteljau/render/tolerance.hpp"
 #include "casteljau/render/write.hpp"
+#include "support/plane_geometry.hpp"
 
 namespace casteljau::render {
 namespace {
+
+using test::distance_to_segment;
 
 BezierCurve notebook_curve() {
   return BezierCurve::make(*PointArray::make({{0, 0}, {1, 2}, {2, 2}, {4, 1}, {4, 0}})).value();
@@ -75,13 +79,6 @@ std::vector<Vec2> polyline_with_stroke(const std::string& svg, const std::string
   std::smatch match;
   if (!std::regex_search(svg, match, pattern)) return {};
   return parse_points(match[1].str());
-}
-
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double length2 = dot(ab, ab);
-  const double u = length2 > 0.0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  return distance(p, a + u * ab);
 }
 
 double distance_to_polyline(Vec2 p, const std::vector<Vec2>& line) {

@@ -15,6 +15,13 @@ inline rc::Gen<double> coordinate() {
   return rc::gen::map(rc::gen::inRange(-1000000, 1000001), [](int i) { return i * 1e-4; });
 }
 
+/// A coordinate in [-100, 100] on the grid of 1 / steps_per_unit, each value
+/// k / steps_per_unit (a correctly rounded quotient).
+inline rc::Gen<double> coordinate_on_grid(int steps_per_unit) {
+  return rc::gen::map(rc::gen::inRange(-100 * steps_per_unit, 100 * steps_per_unit + 1),
+                      [steps_per_unit](int k) { return k / static_cast<double>(steps_per_unit); });
+}
+
 /// A parameter in [0, 1] (both ends included, often).
 inline rc::Gen<double> unit_parameter() {
   return rc::gen::weightedOneOf<double>({{1, rc::gen::just(0.0)},

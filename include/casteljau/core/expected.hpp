@@ -33,7 +33,7 @@ enum class ErrorKind {
   out_of_domain,     ///< a parameter outside the curve's or surface's domain
   parse,             ///< text that is not a valid CSV table, model JSON, number...
   io,                ///< a file that cannot be opened, read or written
-  limit,             ///< a size or count beyond casteljau's limits (core/tolerance.hpp)
+  limit,             ///< a size or count beyond casteljau's limits (the tolerance.hpp of core or of the layer)
   singular,          ///< a linear system without a unique solution (interpolation, fits)
 };
 

@@ -11,7 +11,6 @@
 #include <string_view>
 
 #include "casteljau/core/expected.hpp"
-#include "casteljau/core/tolerance.hpp"
 
 namespace casteljau {
 

@@ -13,7 +13,6 @@
 #include "casteljau/bezier/piecewise_bezier.hpp"
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/core/interval.hpp"
-#include "casteljau/core/tolerance.hpp"
 #include "casteljau/curves/curve_view.hpp"
 #include "casteljau/surfaces/bezier_surface.hpp"
 #include "casteljau/surfaces/bspline_surface.hpp"
