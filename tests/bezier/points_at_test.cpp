@@ -16,6 +16,7 @@
 #include "casteljau/core/tolerance.hpp"
 #include "support/exact.hpp"
 #include "support/generators.hpp"
+#include "support/sanitizers.hpp"
 
 namespace casteljau {
 namespace {
@@ -101,6 +102,9 @@ TEST(PointsAt, LargeBatchesEqualPointAt) {
   for (int d = 1; d <= 3; ++d)
     for (bool rational : {false, true})
       for (int n : {1, 3, 15}) {
+        // Under the sanitizers one degree: the store paths, alignments and
+        // ragged ends (what memory errors hide in) are the same for each.
+        if (test::kUnderSanitizers && n != 3) continue;
         const BezierCurve curve = seeded.curve(n, d, rational);
         for (std::size_t offset : {0, 1, 3}) {
           EXPECT_EQ(first_difference(curve, ts, offset, 11), -1)

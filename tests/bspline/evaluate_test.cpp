@@ -10,6 +10,7 @@
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/bspline/knot_vector.hpp"
+#include "support/sanitizers.hpp"
 #include "../support/exact.hpp"
 #include "../support/exact_basis.hpp"
 
@@ -101,11 +102,14 @@ TEST(BSplinePointAt, ClampedCurvesInterpolateTheirEndsExactly) {
 }
 
 TEST(BSplineDerivativeAt, EqualsExactDerivativesUpToOrderThree) {
+  const std::size_t stride = static_cast<std::size_t>(test::sample_count(1, 4));
   for (const BSplineCurve& curve : sample_curves()) {
     const double scale = scale_of(curve.control_points());
     // Derivatives grow like (p / shortest span)^k: measure against the
     // exact derivative's own size as well as the scale.
-    for (double u : parameters_of(curve)) {
+    const std::vector<double> us = parameters_of(curve);
+    for (std::size_t i = 0; i < us.size(); i += stride) {
+      const double u = us[i];
       for (int k = 1; k <= 3; ++k) {
         const auto exact = test::exact_bspline_derivative(curve, u, k);
         const Point computed = derivative_at(curve, u, k);
