@@ -15,11 +15,14 @@ PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark
   libcairo2-dev poppler-utils emscripten python3-dev python3-numpy python3-scipy \
   python3-matplotlib python3-pytest python3-hypothesis python3-meshio \
   pybind11-dev python3-pybind11 chromium python3-ezdxf libocct-data-exchange-dev \
-  ccache python3-pytest-xdist
+  ccache python3-pytest-xdist linuxcnc-uspace
 # Checkers we did not write: chromium reads SVG in tests/svg/ (driven by npm's
 # playwright-core, installed into tests/svg/node_modules by deps); python3-ezdxf
 # reads and writes DXF in tests/python/test_dxf_ezdxf.py; OpenCASCADE
-# (libocct-data-exchange-dev) reads IGES and STEP in tests/exchange/.
+# (libocct-data-exchange-dev) reads IGES and STEP in tests/exchange/;
+# LinuxCNC's interpreter (linuxcnc-uspace: /usr/bin/rs274) and npm's
+# gcode-toolpath (cncjs's, installed into tests/gcode/node_modules by deps)
+# read G-code in tests/gcode/.
 # Peers measured beside casteljau by `make bench`.
 BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
   libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev \
@@ -82,6 +85,7 @@ endef
 deps:
 	$(call install_missing,$(PACKAGES))
 	@[ -d tests/svg/node_modules/playwright-core ] || { cd tests/svg && npm ci --no-audit --no-fund --ignore-scripts; }
+	@[ -d tests/gcode/node_modules/gcode-toolpath ] || { cd tests/gcode && npm ci --no-audit --no-fund --ignore-scripts; }
 
 bench-deps: deps
 	$(call install_missing,$(BENCH_PACKAGES))

@@ -24,5 +24,6 @@ void add_length_command(CLI::App& app, int& status);       // cli/length_command
 void add_closest_command(CLI::App& app, int& status);      // cli/closest_command.cpp
 void add_intersect_command(CLI::App& app, int& status);    // cli/intersect_command.cpp
 void add_text_command(CLI::App& app, int& status);         // cli/text_command.cpp
+void add_gcode_command(CLI::App& app, int& status);        // cli/gcode_command.cpp
 
 }  // namespace casteljau::cli

@@ -63,6 +63,9 @@ constexpr std::array kEntries{
     Entry{"text", "The glyph outlines of a text in a font, as closed curves",
           "casteljau text Bezier --font /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf --size 10 -o word.json",
           "each contour of the word's glyphs in DejaVu Sans, an em 10 units long"},
+    Entry{"gcode", "A G-code toolpath (G0-G3) of plane curves, within a tolerance",
+          "casteljau gcode examples/semicircle.json --tolerance 0.01 -o semicircle.nc",
+          "a program that cuts the exact NURBS half circle of radius 3 as one G2 arc, 1 mm deep"},
 };
 
 /// The subcommand's entry in kEntries; every subcommand has one.

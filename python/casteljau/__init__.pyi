@@ -864,6 +864,21 @@ def models_to_json(models: Sequence[_Model]) -> str: ...
 
 def write_models_json(models: Sequence[_Model], path: _PathLike) -> None: ...
 
+def gcode(
+    models: Sequence[_Model],
+    tolerance: float,
+    *,
+    lines: bool = False,
+    units: str = "mm",
+    dialect: str = "grbl",
+    depth: float | None = None,
+    step_down: float = 0.0,
+    safe_z: float | None = None,
+    feed: float | None = None,
+    plunge_feed: float | None = None,
+    decimals: int = 0,
+) -> str: ...
+
 def is_surface(model: _Model) -> bool: ...
 
 def type_name(model: _Model) -> str: ...

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -23,6 +24,7 @@
 #include "bindings.hpp"
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
+#include "casteljau/io/gcode.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
@@ -102,6 +104,43 @@ py::array_t<std::int64_t> lines_to_numpy(const std::vector<std::size_t>& lines) 
   py::array_t<std::int64_t> array(static_cast<py::ssize_t>(lines.size()));
   for (std::size_t k = 0; k < lines.size(); ++k) array.mutable_data()[k] = static_cast<std::int64_t>(lines[k]);
   return array;
+}
+
+/// The program of casteljau.gcode: each model a contour (docs/formats.md, "G-code").
+std::string gcode_of(const py::handle& objects, double tolerance, bool lines, const std::string& units,
+                     const std::string& dialect, std::optional<double> depth, double step_down,
+                     std::optional<double> safe_z, std::optional<double> feed, std::optional<double> plunge_feed,
+                     int decimals) {
+  if (units != "mm" && units != "in") throw py::value_error(fmt::format("units '{}' is not mm or in", units));
+  if (dialect != "grbl" && dialect != "linuxcnc")
+    throw py::value_error(fmt::format("dialect '{}' is not grbl or linuxcnc", dialect));
+  const std::vector<Model> models = models_from(objects);
+  GcodeOptions options = default_gcode_options(units == "mm" ? GcodeUnits::millimetres : GcodeUnits::inches);
+  options.dialect = dialect == "grbl" ? GcodeDialect::grbl : GcodeDialect::linuxcnc;
+  options.depth = depth.value_or(options.depth);
+  options.step_down = step_down;
+  options.safe_height = safe_z.value_or(options.safe_height);
+  options.feed = feed.value_or(options.feed);
+  options.plunge_feed = plunge_feed.value_or(options.plunge_feed);
+  return unwrap(without_gil([&]() -> Expected<std::string> {
+    Toolpath toolpath;
+    toolpath.tolerance = Tolerance{tolerance};
+    toolpath.sources = {"Python"};
+    const auto digits = gcode_decimals(toolpath.tolerance, options.units, decimals);
+    if (!digits) return digits.error();
+    options.decimals = *digits;
+    for (std::size_t k = 0; k < models.size(); ++k) {
+      const std::string where = fmt::format("models[{}]", k);
+      if (is_surface(models[k])) return Error{where + ": gcode cuts plane curves, this is a surface"};
+      auto contour = contour_of(curve_view(models[k]), toolpath.tolerance, *digits,
+                                lines ? GcodeMotion::lines : GcodeMotion::arcs);
+      if (!contour) return with_context(contour.error(), where);
+      toolpath.contours.push_back(std::move(*contour));
+    }
+    auto program = write_gcode(toolpath, options);
+    if (!program) return program.error();
+    return std::move(program->text);
+  }));
 }
 
 }  // namespace
@@ -264,6 +303,21 @@ void bind_io(py::module_& module) {
       py::arg("path"), py::arg("contents"),
       "Writes contents (str as UTF-8, or bytes) to path atomically: a temporary file in the same folder, flushed, "
       "renamed over the target; on failure the target is untouched. ValueError names the file.");
+
+  // --- G-code ----------------------------------------------------------------------------
+  module.def("gcode", &gcode_of, py::arg("models"), py::arg("tolerance"), py::kw_only(), py::arg("lines") = false,
+             py::arg("units") = "mm", py::arg("dialect") = "grbl", py::arg("depth") = py::none(),
+             py::arg("step_down") = 0.0, py::arg("safe_z") = py::none(), py::arg("feed") = py::none(),
+             py::arg("plunge_feed") = py::none(), py::arg("decimals") = 0,
+             "The G-code program (RS-274/NGC text) that cuts the plane curves of models, as `casteljau gcode` "
+             "writes it (docs/formats.md, \"G-code\"): each curve fitted by arcs and lines (G2/G3 in the IJK form, "
+             "G1; lines=True: G1 only) so that the path, the rounding of its numbers included, is within tolerance "
+             "of the curves; contours ordered to shorten the rapid moves, cut down to depth in passes of at most "
+             "step_down (0: one pass). units 'mm' (G21) or 'in' (G20); dialect 'grbl' or 'linuxcnc'; depth, safe_z, "
+             "feed and plunge_feed default to the unit's (1, 5, 600, 200 in mm; 0.04, 0.2, 24, 8 in inches); "
+             "decimals 0 picks the fewest that leave nine tenths of the tolerance to the fit. ValueError for a "
+             "surface or a space curve (naming models[k]), a tolerance not > 0 or finer than the decimals carry, a "
+             "depth, height or feed not > 0.");
 
   // --- meshes ----------------------------------------------------------------------------
   module.def(

@@ -21,6 +21,7 @@
 #include "casteljau/bezier/bezier_curve.hpp"
 #include "casteljau/nurbs/conics.hpp"
 #include "casteljau/surfaces/revolution.hpp"
+#include "io_test_support.hpp"
 
 namespace casteljau {
 namespace {
@@ -33,12 +34,7 @@ ExchangeHeader fixed_header() {
   return header;
 }
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
+using test::lines_of;
 
 /// Columns 1-72 of the records of one section without their trailing blanks, joined.
 std::string section_data(const std::vector<std::string>& lines, char section) {

@@ -14,8 +14,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "casteljau/core/expected.hpp"
 #include "casteljau/core/model_numbers.hpp"
@@ -130,6 +132,14 @@ inline std::string json_error(const std::string& text) {
   const auto models = parse_models_json(text, "m.json");
   EXPECT_FALSE(models.has_value()) << text;
   return models ? std::string{} : models.error().message;
+}
+
+/// The lines of a text, without their line ends.
+inline std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
 }
 
 }  // namespace casteljau::test

@@ -57,4 +57,113 @@ inline constexpr double kDefaultSvgCubicRelativeTolerance = 1e-6;
 /// confusion distance is 1e-7).
 inline constexpr double kExchangeResolutionRelative = 1e-12;
 
+// --- G-code (io/gcode.hpp) ------------------------------------------------------
+// Lengths are in the program's unit (mm for G21, inch for G20).
+
+/// Fewest and most decimals of a G-code number. 4 is what LinuxCNC and GRBL
+/// documents use for mm (0.1 micrometre) and what an arc's radius check
+/// needs (kGcodeRadiusAgreement); 8 keeps every coordinate up to
+/// kGcodeLargestCoordinate within the 15 significant digits of a double.
+inline constexpr int kGcodeFewestDecimals = 4;
+inline constexpr int kGcodeMostDecimals = 8;
+/// The decimals written unless asked: 4 in mm (0.1 micrometre), 5 in inches
+/// (0.25 micrometre), finer than any machine moves.
+inline constexpr int kGcodeDefaultDecimalsMillimetres = 4;
+inline constexpr int kGcodeDefaultDecimalsInches = 5;
+
+/// The start and end radii of an arc, measured from its centre as written
+/// (after rounding to the decimals), agree within this, in the program's
+/// unit: 50 times stricter than LinuxCNC's check (0.005 mm and 0.1 %) and
+/// GRBL's (error 33: 0.005 mm and 0.1 %), 20 times the older NIST 0.002 mm,
+/// so a program accepted here is accepted by both, in mm and in inches.
+inline constexpr double kGcodeRadiusAgreement = 1e-4;
+/// Of the centres on the grid that meet kGcodeRadiusAgreement, the nearest
+/// to the true centre among those whose radii agree within this fraction of
+/// it is written (else the one whose radii agree best): a margin for
+/// controllers that compute in single precision (GRBL's float: about 1e-5
+/// at 100 mm) without moving the arc further than needed. Dimensionless.
+inline constexpr double kGcodeRadiusMargin = 0.5;
+
+/// Grid steps (units of the last decimal) that a written arc centre may move
+/// from the rounded true centre, in each direction, to meet
+/// kGcodeRadiusAgreement: one step moves the arc by less than 1.5 units of
+/// the last decimal, the order of the rounding of its end points.
+inline constexpr int kGcodeCentreSearchSteps = 1;
+
+/// How far the rounding of a program's numbers may move its path, in units
+/// of the last decimal: an end point moves by up to 0.71 units, a chord
+/// written for an arc sags by up to kGcodeChordSagittaUnits more, and an
+/// arc is written only when the distance of its written centre from the
+/// true one plus the larger difference of its written radii from the true
+/// radius is at most this (which bounds the distance of every point the
+/// controller moves along from the true circle) and its middle is within
+/// this of the true middle. A centre one grid step from the rounded true
+/// one and ends rounded both ways stay within about 4 units. The tolerance
+/// of a program is its whole budget: the contours are fitted within the
+/// tolerance minus this allowance (gcode_rounding_allowance).
+inline constexpr double kGcodeRoundingUnits = 5.0;
+
+/// Unless the decimals are asked for, a program carries the fewest (at
+/// least the unit's default) whose rounding allowance is at most this share
+/// of the tolerance: the fit keeps nine tenths of the budget. Dimensionless.
+inline constexpr double kGcodeRoundingShare = 0.1;
+
+/// The smallest radius of an arc written as G2/G3, in inches (in mm: times
+/// 25.4, 0.00254 mm): twice what LinuxCNC refuses as a "zero-radius arc"
+/// (RADIUS_TOLERANCE_INCH, 5e-5 in, 0.00127 mm). A smaller arc is halved
+/// into chords like any arc no centre writes well; its sagitta is at most
+/// twice its radius, so three halvings bring it within the rounding.
+inline constexpr double kGcodeSmallestArcRadiusInches = 1e-4;
+
+/// An arc whose radius exceeds this multiple of the drawing's size (the
+/// diagonal of its box) is written as lines: its centre lies far outside the
+/// work area, where controllers refuse it or lose precision, and its sagitta
+/// is then below 1/80,000 of the drawing. Dimensionless.
+inline constexpr double kGcodeFlatArcRadius = 1e4;
+
+/// An arc written as a single G1 chord (its radius check failed after
+/// rounding, or it is flat) when its sagitta is at most this fraction of the
+/// last decimal's unit: no further from the arc than the rounding of the
+/// points themselves. A larger one is halved and each half tried again, at
+/// most kGcodeMostArcHalvings times (each halving divides the sagitta by 4).
+inline constexpr double kGcodeChordSagittaUnits = 0.5;
+inline constexpr int kGcodeMostArcHalvings = 40;
+
+/// Largest |coordinate| (and safe height, depth) of a program, in its unit:
+/// a kilometre in mm, beyond any machine (a larger number is a unit mistake),
+/// and small enough that kGcodeMostDecimals fit in a double.
+inline constexpr double kGcodeLargestCoordinate = 1e6;
+
+/// The cutting order's 2-opt runs over at most this many contours (each
+/// sweep tries every pair: 2000 contours are 2 million pairs, a few
+/// milliseconds) and makes at most kGcodeMostOrderSweeps sweeps; beyond,
+/// the greedy nearest-neighbour order stays as it is.
+inline constexpr std::size_t kGcodeMostTwoOptContours = 2000;
+inline constexpr int kGcodeMostOrderSweeps = 50;
+
+/// Most depth passes of one program, and most moves (lines of motion) in all:
+/// beyond these the request (a step down tiny against the depth, a tolerance
+/// tiny against the drawing) is refused rather than writing gigabytes.
+inline constexpr int kGcodeMostPasses = 10000;
+inline constexpr long kGcodeMostMoves = 1L << 24;
+
+/// The passes are ceil(depth / step down) counted with this relative slack,
+/// so that a depth of 0.3 in steps of 0.1 (2.9999999999999996 in doubles)
+/// takes 3 passes, not 4.
+inline constexpr double kGcodePassSlack = 1e-9;
+
+/// Defaults of a program in mm (in inches: the next four): the
+/// safe height of rapid moves above the work (Z = 0), the depth of the cut
+/// below it, the cutting feed and the plunge feed, in units per minute:
+/// a small router engraving wood or plastic.
+inline constexpr double kGcodeDefaultSafeHeightMillimetres = 5.0;
+inline constexpr double kGcodeDefaultDepthMillimetres = 1.0;
+inline constexpr double kGcodeDefaultFeedMillimetres = 600.0;
+inline constexpr double kGcodeDefaultPlungeFeedMillimetres = 200.0;
+/// The same in inches, round numbers near the mm ones (0.2 in = 5.08 mm).
+inline constexpr double kGcodeDefaultSafeHeightInches = 0.2;
+inline constexpr double kGcodeDefaultDepthInches = 0.04;
+inline constexpr double kGcodeDefaultFeedInches = 24.0;
+inline constexpr double kGcodeDefaultPlungeFeedInches = 8.0;
+
 }  // namespace casteljau::tolerances
