@@ -11,9 +11,12 @@
 
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/file.hpp"
+#include "casteljau/io/gcode.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/render/plots.hpp"
 #include "casteljau/render/surface_plots.hpp"
+#include "casteljau/render/toolpath_plot.hpp"
 #include "casteljau/render/write.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
@@ -36,7 +39,14 @@ struct PlotCommandOptions {
   bool data_polyline = false;
   std::string view;
   int iso_curves = 11;
+  std::string source;  ///< with a G-code program: the curves it was made from
 };
+
+/// Whether the file is a G-code program, by its extension.
+bool is_program(const std::string& path) {
+  const std::string extension = lowercase_extension(path);
+  return extension == ".nc" || extension == ".ngc" || extension == ".gcode" || extension == ".tap";
+}
 
 /// How a CSV point set is drawn: as the control polygon of one Bézier curve
 /// (as for eval, the default), or as data: its points, the polyline through
@@ -92,6 +102,33 @@ int write_plot(const render::Figure& figure, const std::string& path, render::Fi
   return write_figure_output(path, figure, format, progress.callback());
 }
 
+/// The preview of a G-code program (render/toolpath_plot.hpp), over --source.
+int run_program_plot(const PlotCommandOptions& options, render::FigureFormat format) {
+  if (options.inputs.size() != 1)
+    return fail("a G-code program is plotted alone (the curves it was made from: --source MODEL)");
+  for (const auto& [given, name] :
+       {std::pair{!options.construction.empty(), "--construction"}, std::pair{options.control_polygon, "--control-polygon"},
+        std::pair{options.points, "--points"}, std::pair{options.comb, "--comb"}, std::pair{options.basis, "--basis"},
+        std::pair{options.tangents, "--tangents"}, std::pair{!options.view.empty(), "--view"}}) {
+    if (given) return fail(fmt::format("{} applies to curves and surfaces, not to a G-code program", name));
+  }
+  const std::string& path = options.inputs.front();
+  auto text = read_text_file(path);
+  if (!text) return fail(text.error());
+  auto program = read_gcode(*text);
+  if (!program) return fail(with_context(program.error(), display_name(path)));
+  std::vector<Model> source;
+  if (!options.source.empty()) {
+    auto models = read_model_file(options.source, options.units);
+    if (!models) return fail(models.error());
+    source = std::move(*models);
+  }
+  auto figure = render::toolpath_figure(*program, std::filesystem::path(path).filename().string(), source,
+                                        std::filesystem::path(options.source).filename().string());
+  if (!figure) return fail(figure.error());
+  return write_plot(*figure, options.output, format);
+}
+
 int run_plot(const PlotCommandOptions& options) {
   render::PlotOptions plot;
   plot.bezier.control_polygon = options.control_polygon;
@@ -107,6 +144,8 @@ int run_plot(const PlotCommandOptions& options) {
   // Refuse a bad output name before reading anything.
   const auto format = figure_output_format(options.output);
   if (!format) return fail(format.error());
+  if (!options.inputs.empty() && is_program(options.inputs.front())) return run_program_plot(options, *format);
+  if (!options.source.empty()) return fail("--source goes with a G-code program (.nc, .ngc, .gcode, .tap)");
   // --points-only is the older name of --data-points.
   const CsvStyle csv{options.data_points || options.points_only, options.data_polyline};
   std::vector<render::PlotSource> sources;
@@ -167,7 +206,8 @@ void add_plot_command(CLI::App& app, int& status) {
       "PNG and PDF add a panel with the surfaces tessellated and shaded (Lambert, painter's algorithm).");
   CLI::Option* inputs = plot->add_option("INPUT", options->inputs,
                                          "Model JSON (.json), CSV point set (.csv) or SVG drawing (.svg); several are "
-                                         "drawn together")
+                                         "drawn together. Or one G-code program (.nc, .ngc, .gcode, .tap): its "
+                                         "preview, rapid moves dashed, lines and arcs in two colours, plunges marked")
                             ->required();
   add_units_option(plot, options->units);
   CLI::Option* output =
@@ -193,7 +233,12 @@ void add_plot_command(CLI::App& app, int& status) {
   plot->add_option("--iso-curves", options->iso_curves,
                    "Surfaces: iso-curves per direction, evenly spaced over the domain, ends included (default 11)")
       ->type_name("N");
-  set_action(plot, status, {{inputs}, output}, [options] { return run_plot(*options); });
+  CLI::Option* source =
+      plot->add_option("--source", options->source,
+                       "With a G-code program (.nc, .ngc, .gcode, .tap): the curves it was made from, drawn beneath "
+                       "its moves")
+          ->type_name("MODEL");
+  set_action(plot, status, {{inputs, source}, output}, [options] { return run_plot(*options); });
 }
 
 }  // namespace casteljau::cli

@@ -47,4 +47,10 @@ Expected<std::vector<GalleryFigure>> query_gallery_figures(const std::filesystem
 /// sailboat.svg or one with problems, a missing font (fonts-dejavu-core).
 Expected<std::vector<GalleryFigure>> drawing_gallery_figures(const std::filesystem::path& examples_dir);
 
+/// The G-code figures (issue 41; gallery_gcode.cpp, 41 to 43): the head and
+/// the car cut within 0.01 mm, the seed's half circle as one G2, a word;
+/// each program written, read back and drawn over its curves. Errors: a
+/// missing head.csv or car.csv, a missing font (fonts-dejavu-core).
+Expected<std::vector<GalleryFigure>> gcode_gallery_figures(const std::filesystem::path& examples_dir);
+
 }  // namespace casteljau::render::detail

@@ -427,6 +427,7 @@ std::span<const GallerySection> gallery_sections() {
        "questions asked of a curve: equal-parameter against equal-arc-length samples on the head, curvature combs "
        "of the car's C¹ and C² interpolants, the head's closest-point field, intersections with their kinds"},
       {39, 40, "drawings read: an SVG drawing with the control polygons of its Bézier pieces, a word in a TrueType font with its on- and off-curve points"},
+      {41, 43, "G-code: the head and the car cut within 0.01 mm, the seed's half circle as one G2 arc, a word engraved; each program read back and drawn over its curves"},
   };
   return kSections;
 }
@@ -495,6 +496,9 @@ Expected<std::vector<GalleryFigure>> gallery_figures(const std::filesystem::path
   auto drawings = detail::drawing_gallery_figures(examples_dir);
   if (!drawings) return drawings.error();
   for (auto& f : *drawings) figures.push_back(std::move(f));
+  auto gcode = detail::gcode_gallery_figures(examples_dir);
+  if (!gcode) return gcode.error();
+  for (auto& f : *gcode) figures.push_back(std::move(f));
   return figures;
 }
 

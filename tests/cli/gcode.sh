@@ -91,6 +91,23 @@ done
 grep -Eq '^gcode: 2[0-9] contours' "$work/out" || fail_test "every kind: summary $(cat "$work/out")"
 [[ $(count "$work/all.nc" '^M2$') -eq 1 ]] || fail_test "every kind: one program end"
 
+# --- the preview: plot OUT.nc [--source MODEL] ---
+"$casteljau" gcode "$semicircle" --tolerance 0.01 --step-down 0.5 -o "$work/semi2.nc" >/dev/null
+"$casteljau" plot "$work/semi2.nc" --source "$semicircle" -o "$work/preview.svg" 2>"$work/err" ||
+  fail_test "plot a program: $(cat "$work/err")"
+has "$work/preview.svg" "preview title" 'semi2\.nc: 2 arcs, 0 lines, 2 plunges'
+for label in "rapid moves \(G0\)" "source curves" "arcs \(G2, G3\)" "plunges"; do
+  has "$work/preview.svg" "preview legend" "$label"
+done
+expect_error "a program with --comb" "--comb applies to curves and surfaces, not to a G-code program" \
+  plot "$work/semi2.nc" --comb -o "$work/bad.svg"
+expect_error "--source without a program" "--source goes with a G-code program (.nc, .ngc, .gcode, .tap)" \
+  plot "$semicircle" --source "$semicircle" -o "$work/bad.svg"
+expect_error "two programs" "a G-code program is plotted alone" plot "$work/semi2.nc" "$work/semi.nc" -o "$work/bad.svg"
+printf 'G21\nG91\nG1 X1\n' >"$work/incremental.nc"
+expect_error "a program it does not read" "incremental.nc: line 2: G91 is not read" plot "$work/incremental.nc" -o "$work/bad.svg"
+[[ ! -e "$work/bad.svg" ]] || fail_test "an error left $work/bad.svg"
+
 # --- bad input: exit 2, one line, nothing written ---
 model space.json '{"type": "bezier", "control_points": [[0,0,0],[1,1,1]]}'
 gc() { echo gcode "$@" -o "$work/bad.nc"; }

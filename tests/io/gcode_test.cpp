@@ -548,5 +548,67 @@ TEST(GcodeWriter, EmptyContoursAreLeftOut) {
   EXPECT_NE(program.text.find("(1 contour: 0 arcs [G2 G3], 1 line [G1])"), std::string::npos) << program.text;
 }
 
+// --- reading programs back (read_gcode) ------------------------------------------
+
+// What write_gcode wrote of the line and the half circle, read back: the
+// moves a controller makes, worked by hand from the program of
+// ALineAndAHalfCircleExactly.
+TEST(GcodeReader, ReadsBackWhatTheWriterWrote) {
+  const Toolpath toolpath =
+      toolpath_of({{ArcSegment{{{1, 2}}, {{4, 6}}, 0.0}}, {ArcSegment{{{10, 0}}, {{0, 0}}, 1.0}}});
+  auto reading = read_gcode(written(toolpath).text);
+  ASSERT_TRUE(reading.has_value()) << reading.error().message;
+  EXPECT_EQ(reading->units, GcodeUnits::millimetres);
+  using Kind = GcodeMove::Kind;
+  const std::vector<std::pair<Kind, std::array<double, 3>>> expected = {
+      {Kind::rapid, {0, 0, 5}},  {Kind::rapid, {0, 0, 5}},  {Kind::line, {0, 0, -1}},
+      {Kind::clockwise_arc, {10, 0, -1}}, {Kind::rapid, {10, 0, 5}}, {Kind::rapid, {4, 6, 5}},
+      {Kind::line, {4, 6, -1}},  {Kind::line, {1, 2, -1}},  {Kind::rapid, {1, 2, 5}}};
+  ASSERT_EQ(reading->moves.size(), expected.size());
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    EXPECT_EQ(reading->moves[k].kind, expected[k].first) << k;
+    EXPECT_EQ(reading->moves[k].to, expected[k].second) << k;
+    if (k > 0) {
+      EXPECT_EQ(reading->moves[k].from, reading->moves[k - 1].to) << k;
+    }
+  }
+  EXPECT_EQ(reading->moves[3].centre, (Vec2{{5, 0}}));
+  EXPECT_EQ(reading->moves[3].line, 13u);  // 8 comment lines, the set-up, G0 Z, G0 X Y, G1 Z
+}
+
+TEST(GcodeReader, TheSubsetOfOtherPrograms) {
+  // Inches, N words, ';' comments, lower case, modal motion, F S M3 ignored, M30 ends.
+  auto reading = read_gcode("%\nN10 g20 g17 g90 (set-up)\nN20 M3 S12000\nG0 X1 Y1 ; to the start\nG1 Z-0.1 F10\n"
+                            "X2\nG3 X3 Y2 J1\nM30\nG0 X9\n");
+  ASSERT_TRUE(reading.has_value()) << reading.error().message;
+  EXPECT_EQ(reading->units, GcodeUnits::inches);
+  ASSERT_EQ(reading->moves.size(), 4u);
+  EXPECT_EQ(reading->moves[2].kind, GcodeMove::Kind::line);
+  EXPECT_EQ(reading->moves[2].to, (std::array<double, 3>{2, 1, -0.1}));
+  EXPECT_EQ(reading->moves[3].kind, GcodeMove::Kind::counterclockwise_arc);
+  EXPECT_EQ(reading->moves[3].centre, (Vec2{{2, 2}}));
+}
+
+TEST(GcodeReader, WhatItDoesNotReadIsRefusedWithItsLine) {
+  const auto error_of_reading = [](const std::string& text) {
+    auto reading = read_gcode(text);
+    return reading ? std::string("no error") : reading.error().message;
+  };
+  EXPECT_EQ(error_of_reading("G21\nG91\nG1 X1"),
+            "line 2: G91 is not read (read: G0 G1 G2 G3, G17, G20 G21, G90, G91.1, G94, G61, G64)");
+  EXPECT_EQ(error_of_reading("G18"), "line 1: G18 is not read (read: G0 G1 G2 G3, G17, G20 G21, G90, G91.1, G94, G61, G64)");
+  EXPECT_EQ(error_of_reading("G2 X1 Y1 R1"), "line 1: an arc in the R form is not read (only I J centres)");
+  EXPECT_EQ(error_of_reading("G2 X1 Y1"), "line 1: an arc without its centre (I J)");
+  EXPECT_EQ(error_of_reading("G1 X1 I2"), "line 1: I or J without an arc (G2 or G3)");
+  EXPECT_EQ(error_of_reading("G1 X"), "line 1: X is not a word (a letter and a finite number)");
+  EXPECT_EQ(error_of_reading("G1 X1.5.5"), "line 1: X1.5.5 is not a word (a letter and a finite number)");
+  EXPECT_NE(error_of_reading("G1 X" + std::string(400, '9')).find("is not a word"), std::string::npos);  // infinite
+  EXPECT_EQ(error_of_reading("G1 X1 (open"), "line 1: a comment '(' without its ')'");
+  EXPECT_EQ(error_of_reading("G21 G1 X1\nG20"), "line 2: the units change after the first move");
+  EXPECT_EQ(error_of_reading("M6 T1"), "line 1: M6 is not read (read: M2 M30, and M3 M4 M5 M7 M8 M9 ignored)");
+  EXPECT_EQ(error_of_reading("G1 X1 #1"), "line 1: '#' where a word's letter belongs");
+  EXPECT_EQ(error_of_reading("G1 X1 A2"), "line 1: the word A2 is not read");
+}
+
 }  // namespace
 }  // namespace casteljau

@@ -9,7 +9,10 @@
 // What is written, the ordering, the passes and the radius rule:
 // docs/formats.md, "G-code".
 
+#include <array>
+#include <cstddef>
 #include <span>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -150,5 +153,33 @@ struct GcodeProgram {
 /// coordinate beyond kGcodeLargestCoordinate, more than kGcodeMostPasses
 /// passes or kGcodeMostMoves moves.
 Expected<GcodeProgram> write_gcode(const Toolpath& toolpath, const GcodeOptions& options);
+
+/// One move of a program as a controller reads it (lengths in the program's unit).
+struct GcodeMove {
+  enum class Kind { rapid, line, clockwise_arc, counterclockwise_arc };
+  Kind kind = Kind::rapid;
+  std::array<double, 3> from{};  ///< X Y Z before the move (the machine starts at 0 0 0)
+  std::array<double, 3> to{};    ///< X Y Z after it
+  Vec2 centre{};                 ///< an arc's centre (from + I J)
+  std::size_t line = 0;          ///< the program's line, from 1
+};
+
+/// The motion of a program, in its unit.
+struct GcodeReading {
+  GcodeUnits units = GcodeUnits::millimetres;
+  std::vector<GcodeMove> moves;
+};
+
+/// Reads the motion of a program in the subset casteljau writes and most
+/// CAM programs for 2.5D milling use (NISTIR 6556 syntax): comments in
+/// parentheses or after ';', N words, G0 G1 G2 G3 (modal, IJ centres
+/// relative to the start: G91.1), G17, G20, G21, G90, G91.1, G94, G64
+/// (P, Q) and G61, F S T words and the spindle and coolant M codes (M3 M4
+/// M5 M7 M8 M9) read and ignored, M2 or M30 ending the program. Errors
+/// ("line 12: ..."): any other G or M code (G91 incremental coordinates,
+/// G18/G19 other planes, G90.1, canned cycles), an arc in the R form, a
+/// word without a number or with one that is not finite, a change of
+/// units after the first move, more than tolerances::kGcodeMostMoves moves.
+Expected<GcodeReading> read_gcode(std::string_view text);
 
 }  // namespace casteljau
