@@ -28,6 +28,7 @@ struct GcodeCommandOptions {
   std::string depth, step_down, safe_z, feed, plunge_feed, decimals;
   std::string units = "mm";
   std::string dialect = "grbl";
+  std::string origin = "drawing";
   std::string output;
   const CLI::Option* depth_option = nullptr;
   const CLI::Option* step_down_option = nullptr;
@@ -43,8 +44,13 @@ Expected<GcodeOptions> program_options(const GcodeCommandOptions& given_options)
     return Error{fmt::format("--units: '{}' is not mm or in", given_options.units.substr(0, 60))};
   if (given_options.dialect != "grbl" && given_options.dialect != "linuxcnc")
     return Error{fmt::format("--dialect: '{}' is not grbl or linuxcnc", given_options.dialect.substr(0, 60))};
+  if (given_options.origin != "drawing" && given_options.origin != "lower-left" && given_options.origin != "centre")
+    return Error{fmt::format("--origin: '{}' is not drawing, lower-left or centre", given_options.origin.substr(0, 60))};
   GcodeOptions options =
       default_gcode_options(given_options.units == "mm" ? GcodeUnits::millimetres : GcodeUnits::inches);
+  options.origin = given_options.origin == "drawing"      ? GcodeOrigin::drawing
+                   : given_options.origin == "lower-left" ? GcodeOrigin::lower_left
+                                                          : GcodeOrigin::centre;
   options.dialect = given_options.dialect == "grbl" ? GcodeDialect::grbl : GcodeDialect::linuxcnc;
   for (auto [option, text, value, name] :
        {std::tuple{given_options.depth_option, &given_options.depth, &options.depth, "--depth"},
@@ -153,6 +159,10 @@ void add_gcode_command(CLI::App& app, int& status) {
   gcode->add_option("--units", options->units, "Units of the program and of the coordinates: mm (G21, the "
                                                "default) or in (G20)")
       ->type_name("mm|in");
+  gcode->add_option("--origin", options->origin,
+                    "Where the drawing goes: at its own coordinates (drawing, the default), or moved so that the "
+                    "lower-left corner or the centre of its box is at the machine's zero")
+      ->type_name("drawing|lower-left|centre");
   gcode->add_option("--dialect", options->dialect,
                     "grbl (the default: nothing GRBL refuses) or linuxcnc (adds G91.1 and G64 P)")
       ->type_name("grbl|linuxcnc");

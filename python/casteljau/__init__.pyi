@@ -877,6 +877,7 @@ def gcode(
     feed: float | None = None,
     plunge_feed: float | None = None,
     decimals: int = 0,
+    origin: str = "drawing",
 ) -> str: ...
 
 def is_surface(model: _Model) -> bool: ...

@@ -110,10 +110,12 @@ py::array_t<std::int64_t> lines_to_numpy(const std::vector<std::size_t>& lines) 
 std::string gcode_of(const py::handle& objects, double tolerance, bool lines, const std::string& units,
                      const std::string& dialect, std::optional<double> depth, double step_down,
                      std::optional<double> safe_z, std::optional<double> feed, std::optional<double> plunge_feed,
-                     int decimals) {
+                     int decimals, const std::string& origin) {
   if (units != "mm" && units != "in") throw py::value_error(fmt::format("units '{}' is not mm or in", units));
   if (dialect != "grbl" && dialect != "linuxcnc")
     throw py::value_error(fmt::format("dialect '{}' is not grbl or linuxcnc", dialect));
+  if (origin != "drawing" && origin != "lower-left" && origin != "centre")
+    throw py::value_error(fmt::format("origin '{}' is not drawing, lower-left or centre", origin));
   const std::vector<Model> models = models_from(objects);
   GcodeOptions options = default_gcode_options(units == "mm" ? GcodeUnits::millimetres : GcodeUnits::inches);
   options.dialect = dialect == "grbl" ? GcodeDialect::grbl : GcodeDialect::linuxcnc;
@@ -122,6 +124,8 @@ std::string gcode_of(const py::handle& objects, double tolerance, bool lines, co
   options.safe_height = safe_z.value_or(options.safe_height);
   options.feed = feed.value_or(options.feed);
   options.plunge_feed = plunge_feed.value_or(options.plunge_feed);
+  options.origin = origin == "drawing" ? GcodeOrigin::drawing
+                   : origin == "lower-left" ? GcodeOrigin::lower_left : GcodeOrigin::centre;
   return unwrap(without_gil([&]() -> Expected<std::string> {
     Toolpath toolpath;
     toolpath.tolerance = Tolerance{tolerance};
@@ -308,14 +312,15 @@ void bind_io(py::module_& module) {
   module.def("gcode", &gcode_of, py::arg("models"), py::arg("tolerance"), py::kw_only(), py::arg("lines") = false,
              py::arg("units") = "mm", py::arg("dialect") = "grbl", py::arg("depth") = py::none(),
              py::arg("step_down") = 0.0, py::arg("safe_z") = py::none(), py::arg("feed") = py::none(),
-             py::arg("plunge_feed") = py::none(), py::arg("decimals") = 0,
+             py::arg("plunge_feed") = py::none(), py::arg("decimals") = 0, py::arg("origin") = "drawing",
              "The G-code program (RS-274/NGC text) that cuts the plane curves of models, as `casteljau gcode` "
              "writes it (docs/formats.md, \"G-code\"): each curve fitted by arcs and lines (G2/G3 in the IJK form, "
              "G1; lines=True: G1 only) so that the path, the rounding of its numbers included, is within tolerance "
              "of the curves; contours ordered to shorten the rapid moves, cut down to depth in passes of at most "
              "step_down (0: one pass). units 'mm' (G21) or 'in' (G20); dialect 'grbl' or 'linuxcnc'; depth, safe_z, "
              "feed and plunge_feed default to the unit's (1, 5, 600, 200 in mm; 0.04, 0.2, 24, 8 in inches); "
-             "decimals 0 picks the fewest that leave nine tenths of the tolerance to the fit. ValueError for a "
+             "decimals 0 picks the fewest that leave nine tenths of the tolerance to the fit; origin 'drawing', "
+             "'lower-left' or 'centre' puts the drawing or its box's corner or centre at X0 Y0. ValueError for a "
              "surface or a space curve (naming models[k]), a tolerance not > 0 or finer than the decimals carry, a "
              "depth, height or feed not > 0.");
 

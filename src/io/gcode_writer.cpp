@@ -447,16 +447,16 @@ Status check_length(const char* name, double value, bool zero_allowed) {
                            tolerances::kGcodeLargestCoordinate)};
 }
 
-Status check_options(const Toolpath& toolpath, const GcodeOptions& options) {
+Status check_options(const std::vector<GcodeContour>& contours, const GcodeOptions& options) {
   for (auto [name, value, zero_allowed] :
        {std::tuple{"safe height", options.safe_height, false}, std::tuple{"depth", options.depth, false},
         std::tuple{"step down", options.step_down, true}, std::tuple{"feed", options.feed, false},
         std::tuple{"plunge feed", options.plunge_feed, false}}) {
     if (auto status = check_length(name, value, zero_allowed); !status) return status;
   }
-  for (std::size_t c = 0; c < toolpath.contours.size(); ++c)
-    for (std::size_t s = 0; s < toolpath.contours[c].size(); ++s)
-      for (const Vec2& p : {toolpath.contours[c][s].start, toolpath.contours[c][s].end})
+  for (std::size_t c = 0; c < contours.size(); ++c)
+    for (std::size_t s = 0; s < contours[c].size(); ++s)
+      for (const Vec2& p : {contours[c][s].start, contours[c][s].end})
         if (!(std::max(std::abs(p[0]), std::abs(p[1])) <= tolerances::kGcodeLargestCoordinate))
           return Error{fmt::format("contour {}, segment {}: point ({}, {}) is beyond the {} a G-code coordinate "
                                    "may reach",
@@ -503,6 +503,24 @@ PlaneBox box_of(const std::vector<GcodeContour>& contours) {
   return box;
 }
 
+/// How far the contours move so that their box's lower-left corner or
+/// centre is at the origin (nothing for GcodeOrigin::drawing, or no contour).
+Vec2 origin_shift(const std::vector<GcodeContour>& contours, GcodeOrigin origin) {
+  const PlaneBox box = box_of(contours);
+  if (origin == GcodeOrigin::drawing || !(box.lower[0] <= box.upper[0])) return Vec2{};
+  return origin == GcodeOrigin::lower_left ? box.lower : (box.lower + box.upper) * 0.5;
+}
+
+/// The contours moved by -shift.
+std::vector<GcodeContour> moved(std::vector<GcodeContour> contours, Vec2 shift) {
+  for (GcodeContour& contour : contours)
+    for (ArcSegment& segment : contour) {
+      segment.start = segment.start - shift;
+      segment.end = segment.end - shift;
+    }
+  return contours;
+}
+
 /// Text for a comment: printable ASCII, parentheses (which would nest or end
 /// the comment) as brackets, anything else as '?'.
 std::string comment_text(std::string_view text) {
@@ -515,7 +533,7 @@ std::string comment_text(std::string_view text) {
 }
 
 std::string header(const Toolpath& toolpath, const GcodeOptions& options, const Numbers& numbers, int decimals,
-                   const GcodeProgram& program, const PlaneBox& box) {
+                   const GcodeProgram& program, const PlaneBox& box, Vec2 shift) {
   const char* unit = unit_name(options.units);
   std::string out = fmt::format("(casteljau {}: RS-274/NGC program for {})\n", CASTELJAU_VERSION_STRING,
                                 options.dialect == GcodeDialect::grbl ? "GRBL" : "LinuxCNC");
@@ -534,6 +552,9 @@ std::string header(const Toolpath& toolpath, const GcodeOptions& options, const 
   if (program.arcs_as_lines > 0)
     out += fmt::format(", {} of them chords of arcs too small or flat for G2 G3 once rounded", program.arcs_as_lines);
   out += ")\n";
+  if (options.origin != GcodeOrigin::drawing)
+    out += fmt::format("(the drawing moved by X {} Y {}: its box's {} at X0 Y0)\n", numbers.text(-shift[0]),
+                       numbers.text(-shift[1]), options.origin == GcodeOrigin::lower_left ? "lower-left corner" : "centre");
   if (program.contours > 0)
     out += fmt::format("(box of the cuts: X {} to {}, Y {} to {})\n", numbers.text(box.lower[0]),
                        numbers.text(box.upper[0]), numbers.text(box.lower[1]), numbers.text(box.upper[1]));
@@ -552,7 +573,9 @@ Expected<GcodeProgram> write_gcode(const Toolpath& toolpath, const GcodeOptions&
   const auto digits = gcode_decimals(toolpath.tolerance, options.units, options.decimals);
   if (!digits) return digits.error();
   const int decimals = *digits;
-  if (auto status = check_options(toolpath, options); !status) return status.error();
+  const Vec2 shift = origin_shift(toolpath.contours, options.origin);
+  const std::vector<GcodeContour> contours = moved(toolpath.contours, shift);
+  if (auto status = check_options(contours, options); !status) return status.error();
   const Numbers numbers(decimals);
 
   int passes = 1;
@@ -565,18 +588,18 @@ Expected<GcodeProgram> write_gcode(const Toolpath& toolpath, const GcodeOptions&
     passes = std::max(1, static_cast<int>(count));
   }
   std::size_t segments = 0;
-  for (const GcodeContour& contour : toolpath.contours) segments += contour.size();
+  for (const GcodeContour& contour : contours) segments += contour.size();
   if (static_cast<double>(segments) * passes > static_cast<double>(tolerances::kGcodeMostMoves))
     return Error{fmt::format("{} segments in {} passes are more than the {} moves a program may hold", segments,
                              passes, tolerances::kGcodeMostMoves),
                  ErrorKind::limit};
 
-  const double size = drawing_size(toolpath.contours, numbers.unit());
+  const double size = drawing_size(contours, numbers.unit());
   Moves moves(options, numbers, tolerances::kGcodeFlatArcRadius * size);
   std::string& body = moves.text();
   body += options.units == GcodeUnits::millimetres ? "G21 G90 G17 G94\n" : "G20 G90 G17 G94\n";
   if (options.dialect == GcodeDialect::linuxcnc) body += fmt::format("G91.1 G64 P{}\n", numbers.text(numbers.unit()));
-  const std::vector<GcodeContour> order = cutting_order(toolpath.contours, toolpath.tolerance, passes);
+  const std::vector<GcodeContour> order = cutting_order(contours, toolpath.tolerance, passes);
   for (const GcodeContour& contour : order) {
     const bool closed = is_closed(contour, toolpath.tolerance);
     const GcodeContour backwards = closed ? GcodeContour{} : reversed(contour);
@@ -593,8 +616,8 @@ Expected<GcodeProgram> write_gcode(const Toolpath& toolpath, const GcodeOptions&
   program.contours = order.size();
   program.passes = passes;
   program.decimals = decimals;
-  program.rapid_length_unordered = rapid_length_of(toolpath.contours, toolpath.tolerance, passes);
-  program.text = header(toolpath, options, numbers, decimals, program, box_of(order)) + body;
+  program.rapid_length_unordered = rapid_length_of(contours, toolpath.tolerance, passes);
+  program.text = header(toolpath, options, numbers, decimals, program, box_of(order), shift) + body;
   return program;
 }
 

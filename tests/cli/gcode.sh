@@ -91,6 +91,16 @@ done
 grep -Eq '^gcode: 2[0-9] contours' "$work/out" || fail_test "every kind: summary $(cat "$work/out")"
 [[ $(count "$work/all.nc" '^M2$') -eq 1 ]] || fail_test "every kind: one program end"
 
+# --- --origin: the box's lower-left corner or centre at X0 Y0 (the half circle's box is -3..3 x 0..3) ---
+"$casteljau" gcode "$semicircle" --tolerance 0.01 --origin lower-left -o "$work/ll.nc" >/dev/null
+has "$work/ll.nc" "lower-left" '^\(the drawing moved by X 3\.0000 Y 0\.0000: its box.s lower-left corner at X0 Y0\)$'
+has "$work/ll.nc" "lower-left" '^\(box of the cuts: X 0\.0000 to 6\.0000, Y 0\.0000 to 3\.0000\)$'
+has "$work/ll.nc" "lower-left" '^G2 X6\.0000 Y0\.0000 I3\.0000 J0\.0000 F600\.0000$'
+"$casteljau" gcode "$semicircle" --tolerance 0.01 --origin centre -o "$work/centre.nc" >/dev/null
+has "$work/centre.nc" "centre" '^\(box of the cuts: X -3\.0000 to 3\.0000, Y -1\.5000 to 1\.5000\)$'
+has "$work/centre.nc" "centre" '^G2 X3\.0000 Y-1\.5000 I3\.0000 J0\.0000 F600\.0000$'
+if grep -q "moved by" "$work/semi.nc"; then fail_test "--origin drawing (the default) moved the drawing"; fi
+
 # --- the preview: plot OUT.nc [--source MODEL] ---
 "$casteljau" gcode "$semicircle" --tolerance 0.01 --step-down 0.5 -o "$work/semi2.nc" >/dev/null
 "$casteljau" plot "$work/semi2.nc" --source "$semicircle" -o "$work/preview.svg" 2>"$work/err" ||
@@ -115,6 +125,7 @@ expect_error "no tolerance" "--tolerance is required" $(gc "$semicircle")
 expect_error "tolerance 0" "--tolerance: 0 is not a distance > 0" $(gc "$semicircle" --tolerance 0)
 expect_error "tolerance x" "--tolerance: 'x' is not a number" $(gc "$semicircle" --tolerance x)
 expect_error "units" "--units: 'cm' is not mm or in" $(gc "$semicircle" --tolerance 0.01 --units cm)
+expect_error "origin" "--origin: 'middle' is not drawing, lower-left or centre" $(gc "$semicircle" --tolerance 0.01 --origin middle)
 expect_error "dialect" "--dialect: 'marlin' is not grbl or linuxcnc" $(gc "$semicircle" --tolerance 0.01 --dialect marlin)
 expect_error "decimals 3" "--decimals: 3 is outside 4..8" $(gc "$semicircle" --tolerance 0.01 --decimals 3)
 # The tolerance is the whole budget: rounding to the decimals (5 units of the last) must leave some of it.

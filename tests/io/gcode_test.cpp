@@ -548,6 +548,29 @@ TEST(GcodeWriter, EmptyContoursAreLeftOut) {
   EXPECT_NE(program.text.find("(1 contour: 0 arcs [G2 G3], 1 line [G1])"), std::string::npos) << program.text;
 }
 
+// --origin: a quarter circle of radius 2 about (10, 20) from angle 0 to pi/2
+// (box 10..12 x 20..22, its extreme points included) and a line below it.
+TEST(GcodeWriter, OriginMovesTheBoxCornerOrCentreToZero) {
+  const GcodeContour arc = {arc_through({{10, 20}}, 2.0, 0.0, std::numbers::pi / 2)};
+  const GcodeContour line = {ArcSegment{{{9, 19}}, {{13, 19}}, 0.0}};
+  GcodeOptions options;
+  options.origin = GcodeOrigin::lower_left;
+  const GcodeProgram corner = written(toolpath_of({arc, line}), options);
+  EXPECT_NE(corner.text.find("(the drawing moved by X -9.0000 Y -19.0000: its box's lower-left corner at X0 Y0)"),
+            std::string::npos) << corner.text;
+  EXPECT_NE(corner.text.find("(box of the cuts: X 0.0000 to 4.0000, Y 0.0000 to 3.0000)"), std::string::npos);
+  options.origin = GcodeOrigin::centre;
+  const GcodeProgram centre = written(toolpath_of({arc, line}), options);
+  EXPECT_NE(centre.text.find("(box of the cuts: X -2.0000 to 2.0000, Y -1.5000 to 1.5000)"), std::string::npos)
+      << centre.text;
+  // The same cuts, moved (the order may differ: it starts from the machine's zero).
+  EXPECT_EQ(corner.arcs, centre.arcs);
+  EXPECT_EQ(corner.lines, centre.lines);
+  EXPECT_NEAR(corner.cut_length, centre.cut_length, 1e-12);
+  EXPECT_NE(corner.text.find("G1 X4.0000 Y0.0000"), std::string::npos) << corner.text;  // the line's end (13, 19)
+  EXPECT_EQ(written(toolpath_of({arc, line})).text.find("moved by"), std::string::npos);
+}
+
 // --- reading programs back (read_gcode) ------------------------------------------
 
 // What write_gcode wrote of the line and the half circle, read back: the

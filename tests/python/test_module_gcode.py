@@ -58,6 +58,8 @@ def test_lines_only_and_the_options():
     assert "F1000.0000" in program
     # The tolerance chooses the decimals: 0.0001 mm needs 6.
     assert "G2 X3.000000 Y0.000000 I3.000000 J0.000000" in c.gcode(models, 0.0001)
+    # The box -3..3 x 0..3 moved to start at X0 Y0.
+    assert "G2 X6.0000 Y0.0000 I3.0000 J0.0000" in c.gcode(models, 0.01, origin="lower-left")
 
 
 @pytest.mark.parametrize("call, message", [
@@ -68,6 +70,7 @@ def test_lines_only_and_the_options():
     (lambda m, s, p: c.gcode(m, 0.01, feed=0), "feed 0 is not a length > 0"),
     (lambda m, s, p: c.gcode(m, 0.01, units="cm"), "units 'cm' is not mm or in"),
     (lambda m, s, p: c.gcode(m, 0.01, dialect="marlin"), "dialect 'marlin' is not grbl or linuxcnc"),
+    (lambda m, s, p: c.gcode(m, 0.01, origin="middle"), "origin 'middle' is not drawing, lower-left or centre"),
     (lambda m, s, p: c.gcode(m + s, 0.01), "models[1]: G-code cuts plane curves, this one lives in R^3"),
     (lambda m, s, p: c.gcode(p, 0.01), "models[0]: gcode cuts plane curves, this is a surface"),
     (lambda m, s, p: c.gcode([], 0.01), "models is empty"),

@@ -81,6 +81,11 @@ Expected<GcodeContour> contour_of(CurveView curve, Tolerance tolerance, int deci
 /// blending within the program's rounding, no Q: arcs stay arcs).
 enum class GcodeDialect { grbl, linuxcnc };
 
+/// Where the drawing sits on the machine: at its own coordinates, or moved
+/// so that the lower-left corner (or the centre) of its box, arcs' extreme
+/// points included, is at the machine's zero X0 Y0.
+enum class GcodeOrigin { drawing, lower_left, centre };
+
 /// How a toolpath is cut. The work surface is Z = 0; rapid moves run at
 /// `safe_height` above it, cuts at `depth` below it in passes of at most
 /// `step_down` (0: one pass at the depth).
@@ -95,6 +100,7 @@ struct GcodeOptions {
   /// Digits after the point of every number, in [kGcodeFewestDecimals,
   /// kGcodeMostDecimals]; 0 asks for the unit's default (4 in mm, 5 in inches).
   int decimals = 0;
+  GcodeOrigin origin = GcodeOrigin::drawing;  ///< where the drawing's box goes (a translation)
 };
 
 /// The options with the defaults of the unit (tolerance.hpp, "G-code"):
