@@ -141,19 +141,29 @@ struct Entry {
   double distance = std::numeric_limits<double>::infinity();
 };
 
+/// A box in the plane, empty until a point is added.
+struct PlaneBox {
+  Vec2 lower{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}};
+  Vec2 upper{{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}};
+  void add(Vec2 p) {
+    for (int k = 0; k < 2; ++k) {
+      lower[k] = std::min(lower[k], p[k]);
+      upper[k] = std::max(upper[k], p[k]);
+    }
+  }
+  bool empty() const { return !(lower[0] <= upper[0]); }
+};
+
 /// The diagonal of the box of every segment's ends (at least `floor`).
 double drawing_size(const std::vector<GcodeContour>& contours, double floor) {
-  double lower[2] = {0, 0}, upper[2] = {0, 0};
-  bool first = true;
+  PlaneBox box;
   for (const GcodeContour& contour : contours)
-    for (const ArcSegment& segment : contour)
-      for (const Vec2& p : {segment.start, segment.end})
-        for (int k = 0; k < 2; ++k) {
-          lower[k] = first ? p[k] : std::min(lower[k], p[k]);
-          upper[k] = first ? p[k] : std::max(upper[k], p[k]);
-          if (k == 1) first = false;
-        }
-  return std::max(std::hypot(upper[0] - lower[0], upper[1] - lower[1]), floor);
+    for (const ArcSegment& segment : contour) {
+      box.add(segment.start);
+      box.add(segment.end);
+    }
+  if (box.empty()) return floor;
+  return std::max(std::hypot(box.upper[0] - box.lower[0], box.upper[1] - box.lower[1]), floor);
 }
 
 /// Where the tool leaves a contour entered at its front: its end for an
@@ -408,14 +418,15 @@ class Moves {
     const Vec2 written_centre = start + best;
     const double smallest = tolerances::kGcodeSmallestArcRadiusInches *
                             (options_.units == GcodeUnits::millimetres ? 25.4 : 1.0);
-    if (std::min(distance(start, written_centre), distance(end, written_centre)) < smallest) return false;
+    const double start_radius = distance(start, written_centre), end_radius = distance(end, written_centre);
+    if (std::min(start_radius, end_radius) < smallest) return false;
     // Every point the controller moves along (its radius going from the
     // start's to the end's) is within shift + max |written radius - true
     // radius| of the true circle; the middle places it on the true arc.
     const double allowance = tolerances::kGcodeRoundingUnits * numbers_.unit();
     const double radius = radius_of(segment);
-    const double moved = distance(written_centre, centre) + std::max(std::abs(distance(start, written_centre) - radius),
-                                                                     std::abs(distance(end, written_centre) - radius));
+    const double moved = distance(written_centre, centre) +
+                         std::max(std::abs(start_radius - radius), std::abs(end_radius - radius));
     if (!(moved <= allowance)) return false;
     if (distance(written_middle(start, end, written_centre, segment.bulge < 0.0), point_along(segment, 0.5)) > allowance)
       return false;
@@ -467,17 +478,6 @@ Status check_options(const std::vector<GcodeContour>& contours, const GcodeOptio
 
 /// The box of the contours: every segment's ends and the points where an
 /// arc reaches its circle's leftmost, rightmost, lowest or highest point.
-struct PlaneBox {
-  Vec2 lower{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}};
-  Vec2 upper{{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}};
-  void add(Vec2 p) {
-    for (int k = 0; k < 2; ++k) {
-      lower[k] = std::min(lower[k], p[k]);
-      upper[k] = std::max(upper[k], p[k]);
-    }
-  }
-};
-
 PlaneBox box_of(const std::vector<GcodeContour>& contours) {
   PlaneBox box;
   for (const GcodeContour& contour : contours)
@@ -507,7 +507,7 @@ PlaneBox box_of(const std::vector<GcodeContour>& contours) {
 /// centre is at the origin (nothing for GcodeOrigin::drawing, or no contour).
 Vec2 origin_shift(const std::vector<GcodeContour>& contours, GcodeOrigin origin) {
   const PlaneBox box = box_of(contours);
-  if (origin == GcodeOrigin::drawing || !(box.lower[0] <= box.upper[0])) return Vec2{};
+  if (origin == GcodeOrigin::drawing || box.empty()) return Vec2{};
   return origin == GcodeOrigin::lower_left ? box.lower : (box.lower + box.upper) * 0.5;
 }
 
