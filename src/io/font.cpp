@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "casteljau/core/point_array.hpp"
+#include "casteljau/core/tolerance.hpp"
 #include "casteljau/core/vec.hpp"
 #include "text.hpp"
 
@@ -135,6 +137,8 @@ Expected<TextOutline> text_outline(std::string_view text, const std::filesystem:
   const double scale = layout.size ? *layout.size / face->units_per_EM : 1.0;
   result.line_height = face->height * scale;
   double pen_x = 0.0, pen_y = 0.0, widest = 0.0;
+  double farthest = 0.0;  // font units: the outlines' largest coordinate
+  std::string beyond;     // the first glyph placed beyond the range of coordinates
   FT_UInt previous = 0;
   for (std::size_t position = 0; position < characters->size(); ++position) {
     const char32_t character = (*characters)[position];
@@ -158,6 +162,23 @@ Expected<TextOutline> text_outline(std::string_view text, const std::filesystem:
     const FT_GlyphSlot slot = face->glyph;
     if (slot->format == FT_GLYPH_FORMAT_OUTLINE) {
       const FT_Outline& outline = slot->outline;
+      // The scaled outline must stay within the range of model coordinates:
+      // the first glyph beyond it is named, after the whole text is measured.
+      double glyph_farthest = 0.0;
+      for (int i = 0; i < outline.n_points; ++i)
+        glyph_farthest = std::max(
+            {glyph_farthest, std::abs(outline.points[i].x + pen_x), std::abs(outline.points[i].y + pen_y)});
+      farthest = std::max(farthest, glyph_farthest);
+      if (glyph_farthest * scale > tolerances::kMaxCoordinate && beyond.empty())
+        beyond = fmt::format("the size {:g} puts glyph {} (for U+{:04X}, character {}) {:.3g} from the origin, "
+                             "beyond {:g}, the range of coordinates",
+                             layout.size.value_or(1.0), glyph, static_cast<unsigned>(character), position,
+                             glyph_farthest * scale, tolerances::kMaxCoordinate);
+      if (!beyond.empty()) {
+        pen_x += slot->advance.x;
+        previous = glyph;
+        continue;
+      }
       int first = 0;
       for (int c = 0; c < outline.n_contours; ++c) {
         const int last = outline.contours[c];
@@ -169,6 +190,13 @@ Expected<TextOutline> text_outline(std::string_view text, const std::filesystem:
     }
     pen_x += slot->advance.x;  // font units: the load did not scale
     previous = glyph;
+  }
+  if (!beyond.empty()) {
+    // The largest size that fits, rounded down to three digits.
+    const double largest = tolerances::kMaxCoordinate / farthest * face->units_per_EM;
+    const double digit = std::pow(10.0, std::floor(std::log10(largest)) - 2.0);
+    return Error{fmt::format("{}: this text allows a size of at most {:.3g}", beyond,
+                             std::floor(largest / digit * (1.0 - 1e-12)) * digit)};
   }
   result.advance = std::max(widest, pen_x) * scale;
   return result;

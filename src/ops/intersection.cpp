@@ -898,41 +898,93 @@ Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b,
   return merged(std::move(points), std::move(overlaps), a.domain().length(), b.domain().length());
 }
 
+/// The direction in which a piece leaves its start (`at_end` false) or
+/// arrives at its end: along the first leg of its control polygon that is
+/// not a point (for positive weights, the tangent's direction there; Farin §5.3).
+Point end_direction(const BezierCurve& piece, bool at_end) {
+  const PointArray& points = piece.control_points();
+  const std::size_t n = points.size() - 1;
+  const std::size_t end = at_end ? n : 0;
+  Point direction(piece.dimension(), 0.0);
+  for (std::size_t step = 1; step <= n; ++step) {
+    const std::size_t other = at_end ? n - step : step;
+    for (int j = 0; j < piece.dimension(); ++j)
+      direction[j] = at_end ? points[end][j] - points[other][j] : points[other][j] - points[end][j];
+    if (dot(direction, direction) > 0.0) break;
+  }
+  return direction;
+}
+
+/// Whether a point hit (s on `arriving` near its end, t on `leaving` near its
+/// start) is the joint where `arriving` ends and `leaving` starts, found off by
+/// rounding: within the tolerance of the joint on both, or within
+/// kIntersectionJointWindow of it in both parameters where the curve does not
+/// turn back (ops/tolerance.hpp says why nothing else meets there).
+bool is_joint(const BezierCurve& arriving, double s, const BezierCurve& leaving, double t, double tolerance) {
+  const Point joint = point_at(leaving, 0.0);
+  if (distance(point_at(arriving, s), joint) <= tolerance && distance(point_at(leaving, t), joint) <= tolerance)
+    return true;
+  if (1.0 - s > tolerances::kIntersectionJointWindow || t > tolerances::kIntersectionJointWindow) return false;
+  const Point in = end_direction(arriving, true), out = end_direction(leaving, false);
+  const double lengths = std::sqrt(dot(in, in) * dot(out, out));
+  return lengths > 0.0 && dot(in, out) > tolerances::kJointReversalCosine * lengths;
+}
+
 Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tolerance tolerance) {
   if (curve.dimension() < 2)
     return Error{"self-intersections need a curve in R^2 or more, this one lives in R^" +
                  std::to_string(curve.dimension())};
   if (!(std::isfinite(tolerance.distance) && tolerance.distance > 0.0))
     return Error{"the intersection tolerance is " + std::to_string(tolerance.distance) + ", it must be finite and > 0"};
-  const BezierPieces pieces = to_bezier_pieces(curve);
-  const std::size_t count = pieces.pieces.size();
-  const Interval domain = curve.domain();
-  const double width = domain.length();
-  const bool closed = distance(point_at(pieces.pieces.front(), 0.0), point_at(pieces.pieces.back(), 1.0)) <= tolerance.distance;
+  // Pieces that stay within the tolerance of one point (a closing segment of
+  // length zero, a repeated knot's sliver) add no point of their own: they are
+  // left out, so that their neighbours meet as consecutive pieces.
+  const BezierPieces all = to_bezier_pieces(curve);
+  std::vector<BezierCurve> pieces;
+  std::vector<Interval> spans;
+  for (std::size_t i = 0; i < all.pieces.size(); ++i) {
+    const PointArray& control = all.pieces[i].control_points();
+    const Point first(control[0].begin(), control[0].end());
+    bool point = true;
+    for (std::size_t j = 1; j < control.size() && point; ++j)
+      point = distance(Point(control[j].begin(), control[j].end()), first) <= tolerance.distance;
+    if (point) continue;
+    pieces.push_back(all.pieces[i]);
+    spans.push_back({all.breakpoints[i], all.breakpoints[i + 1]});
+  }
+  const std::size_t count = pieces.size();
+  const double width = curve.domain().length();
   std::vector<CurveIntersection> points, overlaps;
+  if (count == 0) return points;  // the curve is a point
+  const bool closed = distance(point_at(pieces.front(), 0.0), point_at(pieces.back(), 1.0)) <= tolerance.distance;
   for (std::size_t i = 0; i < count; ++i) {
-    const Interval span_i{pieces.breakpoints[i], pieces.breakpoints[i + 1]};
+    const BezierCurve& piece = pieces[i];
     // Inside piece i: its injective parts against each other.
     std::vector<Part> parts;
-    injective_parts(pieces.pieces[i], {0.0, 1.0}, 0, parts);
+    injective_parts(piece, {0.0, 1.0}, 0, parts);
     std::vector<Hit> inside;
     const auto nothing = [](Interval, Interval) { return false; };
     for (std::size_t p = 0; p < parts.size(); ++p)
       for (std::size_t q = p + 1; q < parts.size(); ++q)
-        subdivided_hits(pieces.pieces[i], parts[p].span, parts[p].curve, pieces.pieces[i], parts[q].span,
-                        parts[q].curve, true, tolerance.distance, nothing, inside);
-    merge_tangent_zones(pieces.pieces[i], pieces.pieces[i], tolerance.distance, inside);
-    for (const Hit& hit : inside) record(hit, pieces.pieces[i], span_i, span_i, points, overlaps);
+        subdivided_hits(piece, parts[p].span, parts[p].curve, piece, parts[q].span, parts[q].curve, true,
+                        tolerance.distance, nothing, inside);
+    merge_tangent_zones(piece, piece, tolerance.distance, inside);
+    for (const Hit& hit : inside) {
+      const bool seam = closed && count == 1 && hit.kind != IntersectionKind::overlap &&
+                        is_joint(piece, std::max(hit.s, hit.t), piece, std::min(hit.s, hit.t), tolerance.distance);
+      if (!seam) record(hit, piece, spans[i], spans[i], points, overlaps);
+    }
     // Piece i against the later pieces.
     for (std::size_t k = i + 1; k < count; ++k) {
-      if (!boxes_meet(pieces.pieces[i], pieces.pieces[k], tolerance.distance)) continue;
-      const Interval span_k{pieces.breakpoints[k], pieces.breakpoints[k + 1]};
-      for (const Hit& hit : piece_hits(pieces.pieces[i], pieces.pieces[k], tolerance.distance)) {
-        const bool joint = k == i + 1 && hit.kind != IntersectionKind::overlap && hit.s == 1.0 && hit.t == 0.0;
-        const bool seam = closed && i == 0 && k + 1 == count && hit.kind != IntersectionKind::overlap &&
-                          hit.s == 0.0 && hit.t == 1.0;
-        if (joint || seam) continue;
-        record(hit, pieces.pieces[i], span_i, span_k, points, overlaps);
+      if (!boxes_meet(piece, pieces[k], tolerance.distance)) continue;
+      for (const Hit& hit : piece_hits(piece, pieces[k], tolerance.distance)) {
+        if (hit.kind != IntersectionKind::overlap) {
+          const bool joint = k == i + 1 && is_joint(piece, hit.s, pieces[k], hit.t, tolerance.distance);
+          const bool seam =
+              closed && i == 0 && k + 1 == count && is_joint(pieces[k], hit.t, piece, hit.s, tolerance.distance);
+          if (joint || seam) continue;
+        }
+        record(hit, piece, spans[i], spans[k], points, overlaps);
       }
     }
   }

@@ -244,7 +244,13 @@ void run_corpus(BezierCurve (*make)(const ExactBezier&), bool space, Tally& tall
       const Tolerance tolerance = default_intersection_tolerance(a, a);
       const auto ours = self_intersections(a, tolerance);
       ASSERT_TRUE(ours) << c.name << ": " << ours.error().message;
-      judge(c.name, a, nullptr, test::exact_self_intersections(c.a), *ours, tolerance.distance, tally, space);
+      // The contract leaves out a closed curve's seam, its pair (0, 1): the
+      // exact answer lists every pair s < t with a(s) = a(t).
+      std::vector<ExactIntersection> exact = test::exact_self_intersections(c.a);
+      std::erase_if(exact, [](const ExactIntersection& e) {
+        return e.kind != ExactIntersection::Kind::overlap && e.a_upper == 0 && e.b_lower == 1;
+      });
+      judge(c.name, a, nullptr, exact, *ours, tolerance.distance, tally, space);
     }
   }
 }

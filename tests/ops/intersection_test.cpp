@@ -156,6 +156,56 @@ TEST(SelfIntersections, OfALoopAndNoneAtACusp) {
   EXPECT_FALSE(crossing.empty());
 }
 
+TEST(SelfIntersections, NoneAtJointsAndSeamsFoundOffByRounding) {
+  // Issue 39: a corner of two lines whose joint was found at b = 1 + 4e-16.
+  const PiecewiseBezierCurve corner =
+      PiecewiseBezierCurve::make({bezier({{9.4454926, 5.9609562}, {12.540921, 8.0804904}}),
+                                  bezier({{12.540921, 8.0804904}, {8.8324052, 8.6470683}})})
+          .value();
+  EXPECT_TRUE(self_intersections(corner, default_intersection_tolerance(corner, corner)).value().empty());
+  // Cantarell's "S" at size 10 (`casteljau text S`): smooth joints are roots
+  // of multiplicity 2 of the implicit equation, known to ~1e-9 of a piece,
+  // and a line meets a cubic at the joint; a simple closed contour.
+  const std::vector<std::vector<std::vector<double>>> s_contour{
+      {{2.63, -0.1}, {4.18, -0.1}, {5.19, 0.69}, {5.19, 1.91}},  {{5.19, 1.91}, {5.19, 4.37}, {1.3, 3.39}, {1.3, 5.18}},
+      {{1.3, 5.18}, {1.3, 5.91}, {1.89, 6.31}, {2.95, 6.31}},    {{2.95, 6.31}, {3.54, 6.31}, {4.18, 6.19}, {4.68, 5.98}},
+      {{4.68, 5.98}, {4.93, 6.63}},                              {{4.93, 6.63}, {4.34, 6.89}, {3.67, 7.03}, {3.01, 7.03}},
+      {{3.01, 7.03}, {1.46, 7.03}, {0.45, 6.26}, {0.45, 5.05}},  {{0.45, 5.05}, {0.45, 2.67}, {4.33, 3.56}, {4.33, 1.79}},
+      {{4.33, 1.79}, {4.33, 1.09}, {3.73, 0.64}, {2.68, 0.64}},  {{2.68, 0.64}, {2.05, 0.64}, {1.27, 0.81}, {0.59, 1.09}},
+      {{0.59, 1.09}, {0.34, 0.44}},                              {{0.34, 0.44}, {1.11, 0.09}, {1.89, -0.1}, {2.63, -0.1}}};
+  std::vector<BezierCurve> pieces;
+  for (const auto& rows : s_contour) pieces.push_back(bezier(rows));
+  const PiecewiseBezierCurve s = PiecewiseBezierCurve::make(pieces).value();
+  EXPECT_TRUE(self_intersections(s, default_intersection_tolerance(s, s)).value().empty());
+  // The same contour started in the middle of a smooth piece: its seam is
+  // tangent-continuous (no tangency reported there).
+  const auto halves = split_at(pieces[0], 0.5).value();
+  std::vector<BezierCurve> rotated{halves.second};
+  rotated.insert(rotated.end(), pieces.begin() + 1, pieces.end());
+  rotated.push_back(halves.first);
+  const PiecewiseBezierCurve started = PiecewiseBezierCurve::make(rotated).value();
+  EXPECT_TRUE(self_intersections(started, default_intersection_tolerance(started, started)).value().empty());
+  // A closed curve of one piece, a teardrop: its seam is no crossing either.
+  const BezierCurve drop = bezier({{0, 0}, {1, 1}, {-1, 1}, {0, 0}});
+  EXPECT_TRUE(self_intersections(drop, default_intersection_tolerance(drop, drop)).value().empty());
+  // Pieces of length zero (an SVG path closed by a segment back to its start,
+  // then `z`; Adwaita's media-playback-start icon) are no crossings either.
+  const PiecewiseBezierCurve triangle =
+      PiecewiseBezierCurve::make({bezier({{2, 2.5}, {12, 8}}), bezier({{12, 8}, {12, 8}}), bezier({{12, 8}, {2, 13.5}}),
+                                  bezier({{2, 13.5}, {2, 2.5}}), bezier({{2, 2.5}, {2, 2.5}})})
+          .value();
+  EXPECT_TRUE(self_intersections(triangle, default_intersection_tolerance(triangle, triangle)).value().empty());
+  // A true crossing next to a joint is kept: the second arm turns back and
+  // crosses the first 1.1e-6 from the joint, (1 - 1.1e-6, 0), at t = 2/3 on the
+  // second piece (y = 1e-6 (2t - 3t^2)).
+  const PiecewiseBezierCurve back = PiecewiseBezierCurve::make({bezier({{0, 0}, {1, 0}}),
+                                                                bezier({{1, 0}, {0.999999, 1e-6}, {0.9999985, -1e-6}})})
+                                        .value();
+  const auto near_joint = self_intersections(back, default_intersection_tolerance(back, back)).value();
+  ASSERT_EQ(near_joint.size(), 1u);
+  EXPECT_NEAR(near_joint[0].b.lower, 1.0 + 2.0 / 3.0, 1e-9);
+}
+
 /// The twisted cubic (t, t^2, t^3) on [0, 1] and, at its point (1/2, 1/4,
 /// 1/8), the line through it along `direction` (u = 1/2 there), moved by
 /// `offset`.

@@ -376,7 +376,7 @@ inline std::vector<IntersectionCase> intersection_corpus() {
   // A parabola and a segment: never.
   add_self("self_quadratic_none", arch);
   add_self("self_line_none", curve({{0, 0}, {1, 2}}));
-  // A closed cubic, a(0) = a(1): self-intersection at the ends (0, 1).
+  // A closed cubic, a(0) = a(1): its seam (0, 1) is no self-intersection.
   add_self("self_closed_cubic", curve({{0, 0}, {1, 2}, {-1, 2}, {0, 0}}));
   // The loop cut at 3/4: its end lies on itself, (1/3, 1).
   add_self("self_end_on_itself", exact_subcurve(loop, 0, Q(3, 4)));

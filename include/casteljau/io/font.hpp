@@ -54,7 +54,10 @@ struct TextOutline {
 /// lacks draw its .notdef glyph (as every text renderer does). Errors: a
 /// font file FreeType cannot open ("'x.ttf' is not a font FreeType reads:
 /// unknown file format"), text that is not UTF-8 (naming the byte), a size
-/// that is not finite and > 0, a font without outlines (bitmap fonts).
+/// that is not finite and > 0 or that puts a glyph beyond the range of
+/// coordinates (tolerances::kMaxCoordinate: "the size 1e+101 puts glyph 43
+/// (for U+0048, character 0) 7.29e+100 from the origin, …: this text allows
+/// a size of at most 1.37e+100"), a font without outlines (bitmap fonts).
 Expected<TextOutline> text_outline(std::string_view text, const std::filesystem::path& font,
                                    const TextLayout& layout = {});
 

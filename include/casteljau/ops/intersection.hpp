@@ -97,8 +97,11 @@ Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b,
 /// C(a) = C(b), each once, as intersections of the curve with itself (`a`
 /// and `b` both on it; overlaps where it runs back over itself). Between
 /// different Bézier pieces as `intersections` finds them (the joint of two
-/// consecutive pieces, and the closing point of a closed curve, are not
-/// self-intersections); inside one piece, the piece is cut where its
+/// consecutive pieces, and the closing point of a closed curve of one piece or
+/// many, are not self-intersections, even where rounding finds them a few ulps
+/// off or, at a smooth joint, ~1e-9 of a piece off: within
+/// tolerances::kIntersectionJointWindow of both pieces, unless the curve turns
+/// back there); inside one piece, the piece is cut where its
 /// hodograph turns by half a turn or more (within a part whose hodograph's
 /// coefficients lie in an open half plane the curve is injective), and
 /// two parts of one piece are intersected by subdivision of their boxes and

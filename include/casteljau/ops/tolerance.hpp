@@ -101,6 +101,19 @@ inline constexpr double kIntersectionSameTangency = 1e-7;
 /// fraction of the domain (an end point of one piece found on another).
 inline constexpr double kIntersectionJointSlack = 1e-9;
 
+/// Two consecutive pieces of a curve (or the two ends of a closed one) meet at
+/// their joint; a meeting found within this fraction of both pieces of it is
+/// that joint, found off by rounding (a smooth joint is a root of
+/// multiplicity 2 of the implicit equation, known to ~1e-8 of a piece), unless
+/// the curve turns back there (the cosine of the angle between the arriving
+/// and leaving directions below kJointReversalCosine, within 8 degrees of a
+/// reversal): elsewhere the two pieces leave the joint apart at a rate of at
+/// least sin 4 degrees of their speed, and meet again only after 0.14 of the
+/// radius of curvature, far outside this window for any piece whose control
+/// polygon's legs differ by less than 1e5 in length.
+inline constexpr double kIntersectionJointWindow = 1e-6;
+inline constexpr double kJointReversalCosine = -0.99;
+
 /// Tangent solutions within this of each other in both parameters are one
 /// contact zone (zones are about sqrt(tolerance / curvature) wide); farther
 /// than kIntersectionZoneReach they are two tangencies.
