@@ -538,10 +538,22 @@ void bind_bezier(py::module_& module) {
   py::class_<PiecewiseBezierCurve>(module, "PiecewiseBezierCurve",
                                    "m Bézier pieces of one dimension end to end (model JSON's piecewise_bezier, seed "
                                    "000's C1 interpolant): piece i covers [i, i+1], the domain is [0, m].")
-      .def(py::init([](const std::vector<BezierCurve>& pieces) { return unwrap(PiecewiseBezierCurve::make(pieces)); }),
+      .def(py::init([](const py::iterable& pieces) {
+             // Each piece a BezierCurve, or its control points as model JSON's
+             // "pieces" hold them (an (n, d) array-like: nested lists, numpy).
+             if (py::isinstance<py::str>(pieces) || py::isinstance<py::bytes>(pieces))
+               throw py::value_error("pieces must be a sequence of BezierCurve or of (n, d) control point arrays, got a string");
+             std::vector<BezierCurve> curves;
+             for (const py::handle piece : pieces) {
+               if (py::isinstance<BezierCurve>(piece)) curves.push_back(piece.cast<BezierCurve>());
+               else curves.push_back(unwrap(BezierCurve::make(points_from(piece, fmt::format("pieces[{}]", curves.size())))));
+             }
+             return unwrap(PiecewiseBezierCurve::make(std::move(curves)));
+           }),
            py::arg("pieces"),
-           "From a sequence of BezierCurve (at least one, all of one dimension; PiecewiseBezierCurve::make). "
-           "Pieces need not join.")
+           "From a sequence of pieces (at least one, all of one dimension; PiecewiseBezierCurve::make), each a "
+           "BezierCurve or its control points as an (n, d) array-like, as model JSON's piecewise_bezier holds them "
+           "(nested lists, or an (m, n, d) numpy array). Pieces need not join.")
       .def_property_readonly("pieces", [](const PiecewiseBezierCurve& c) { return c.pieces(); },
                              "The pieces, a list of BezierCurve (copies).")
       .def_property_readonly("dimension", &PiecewiseBezierCurve::dimension, "d, the number of coordinates.")

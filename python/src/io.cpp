@@ -179,8 +179,10 @@ void bind_io(py::module_& module) {
         return models_to_python(unwrap(without_gil([&] { return read_models(path); })));
       },
       py::arg("path"),
-      "The models of a file that is model JSON or a CSV point set (a point set is the control polygon of one "
-      "BezierCurve): by the extension .json / .csv, else by content. ValueError names the file.");
+      "The models of a file of any format the CLI reads (docs/formats.md): model JSON, a CSV point set (the "
+      "control polygon of one BezierCurve), an SVG drawing (one PiecewiseBezierCurve per subpath, in the root's "
+      "user units) or a DXF drawing (one model per entity): by the extension .json / .csv / .svg / .dxf, else by "
+      "content. ValueError names the file, and for a drawing the first problem's line and element.");
 
   module.def(
       "to_json", [](const py::object& model) { return to_json(model_from(model, "model")); }, py::arg("model"),

@@ -1,6 +1,7 @@
 // SVG path data to Bézier pieces (io/svg_path.hpp says what and why).
 #include "casteljau/io/svg_path.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -9,11 +10,9 @@
 
 #include <fmt/format.h>
 
-#include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/core/vec.hpp"
-#include "casteljau/nurbs/conics.hpp"
 #include "svg_scanner.hpp"
 
 namespace casteljau {
@@ -128,9 +127,17 @@ class Builder {
 };
 
 /// The elliptical arc from the current point to `end` (SVG 2 implementation
-/// notes B.2.4: endpoint to centre parameterization, B.2.5: out-of-range
-/// radii), as the affine image of make_arc's unit-circle arc. Worked in
-/// coordinates divided by the radii, so no square of a large radius overflows.
+/// notes B.2.4, B.2.5: out-of-range radii grow until the ellipse just fits),
+/// as rational quadratic pieces of at most a quarter turn each (weights 1,
+/// cos h, 1 for a piece over 2h of the circle; The NURBS Book §7.3). Worked
+/// in the ellipse's frame divided by its shape, where it is a circle, and
+/// built from the chord's midpoint M: with T the half chord from M to the end,
+/// N the same turned towards the arc's middle, ℓ = |T| / radius and β the half
+/// sweep (sin β = ℓ), the circle's point at angle φ from the middle is
+/// M + (sin φ T + (cos φ − cos β) N) / ℓ. Every offset is of the chord's size,
+/// so an arc of radius 1e12 over a chord of 10 keeps its sagitta (1.25e-11)
+/// where a centre 1e12 away would round it to 1e-4, and neither a tiny radius
+/// (divided into) nor a huge one (squared) overflows.
 Status add_arc(Builder& path, double rx, double ry, double rotation_degrees, bool large_arc, bool sweep, Vec2 end) {
   const Vec2 start = path.current();
   if (start == end) {  // B.2.5 step 1: the segment is omitted
@@ -142,56 +149,56 @@ Status add_arc(Builder& path, double rx, double ry, double rotation_degrees, boo
   if (rx == 0.0 || ry == 0.0) return path.add({start, end}, 'a');  // step 2: a straight line
   const double phi = std::fmod(rotation_degrees, 360.0) * std::numbers::pi / 180.0;
   const double c = std::cos(phi), s = std::sin(phi);
-  const double hx = (start[0] - end[0]) / 2.0, hy = (start[1] - end[1]) / 2.0;
-  // (x1', y1') of B.2.4 step 1, divided by the radii: a and b.
-  double a = (c * hx + s * hy) / rx, b = (-s * hx + c * hy) / ry;
-  const double lambda = a * a + b * b;
-  // Step 2 divided by rx² ry²: the centre (cx', cy') = k (rx b, -ry a) with
-  // k = ±sqrt((1 - λ) / λ). Radii too small (λ >= 1, B.2.5 step 3) are scaled
-  // by sqrt(λ) until the ellipse just fits: then k is 0 exactly, the centre
-  // the midpoint (the formula after scaling would take the square root of
-  // rounding noise and move the centre by sqrt(ε) of the radius).
-  double k = 0.0;
-  if (lambda >= 1.0) {
-    const double grow = std::sqrt(lambda);
-    rx *= grow;
-    ry *= grow;
-    a /= grow;
-    b /= grow;
-  } else {
-    k = std::sqrt((1.0 - lambda) / lambda);
-    if (large_arc == sweep) k = -k;
-  }
-  // The unit vectors from the centre to the ends (step 4's u and v, per radius).
-  const double ux = a - k * b, uy = b + k * a;
-  const double vx = -a - k * b, vy = -b + k * a;
-  const double theta = std::atan2(uy, ux);
-  double delta = std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
-  if (!sweep && delta > 0.0) delta -= 2.0 * std::numbers::pi;
-  if (sweep && delta < 0.0) delta += 2.0 * std::numbers::pi;
-  if (delta == 0.0) return path.add({start, end}, 'a');  // ends apart by rounding only
-  auto unit = make_arc(0.0, 0.0, 1.0, theta, delta);
-  if (!unit) return unit.error();
-  // x = C (rx X, ry Y) + centre, C the rotation by phi; the centre is step 3.
-  const double cx = c * k * rx * b + s * k * ry * a + (start[0] + end[0]) / 2.0;
-  const double cy = s * k * rx * b - c * k * ry * a + (start[1] + end[1]) / 2.0;
-  std::vector<BezierCurve> pieces = to_bezier_pieces(*unit).pieces;
-  for (std::size_t p = 0; p < pieces.size(); ++p) {
-    const PointArray& unit_points = pieces[p].control_points();
-    std::vector<double> mapped;
-    mapped.reserve(unit_points.size() * 2);
-    for (std::size_t i = 0; i < unit_points.size(); ++i) {
-      const double x = rx * unit_points[i][0], y = ry * unit_points[i][1];
-      mapped.push_back(cx + c * x - s * y);
-      mapped.push_back(cy + s * x + c * y);
-    }
-    // The ends are the path's points themselves, not their image to rounding.
-    if (p == 0) mapped[0] = start[0], mapped[1] = start[1];
-    if (p + 1 == pieces.size()) mapped[mapped.size() - 2] = end[0], mapped.back() = end[1];
-    auto piece = BezierCurve::make(PointArray::from_trusted(2, std::move(mapped)),
-                                   std::vector<double>(pieces[p].weights().begin(), pieces[p].weights().end()));
+  // The ellipse's shape (the larger radius 1) and size.
+  const double size = std::max(rx, ry), shape_x = rx / size, shape_y = ry / size;
+  // T: the half chord in the ellipse's frame, divided by the shape.
+  const double hx = (end[0] - start[0]) / 2.0, hy = (end[1] - start[1]) / 2.0;
+  const double tx = (c * hx + s * hy) / shape_x, ty = (-s * hx + c * hy) / shape_y;
+  const double reach = std::hypot(tx, ty);
+  if (!std::isfinite(reach))
+    return Error{fmt::format("the arc's radii {:g} and {:g} make an ellipse too flat to reach its end point", rx, ry)};
+  // ℓ, the half chord of the unit circle: radii too small for the chord
+  // (B.2.5 step 3, λ = (reach / size)² >= 1) grow until it is a diameter.
+  const bool grown = reach >= size;
+  const double lambda = grown ? 1.0 : (tx / size) * (tx / size) + (ty / size) * (ty / size);
+  const double half = grown ? 1.0 : std::sqrt(lambda);
+  const double beta = large_arc ? std::numbers::pi - std::asin(half) : std::asin(half);
+  // N: T turned a quarter towards the arc's middle, to the right of the chord
+  // for a positive sweep (the centre is on its left).
+  const double nx = sweep ? ty : -ty, ny = sweep ? -tx : tx;
+  // A quarter turn per piece; a piece of 2h has the weight cos h.
+  const int count = std::max(1, static_cast<int>(std::ceil(2.0 * beta / (std::numbers::pi / 2.0) - 1e-9)));
+  const double h = beta / count;
+  const Vec2 middle{{start[0] + hx, start[1] + hy}};
+  // A point of the frame, from M, back to the drawing.
+  const auto placed = [&](double along, double across) {
+    const double x = shape_x * (along * tx + across * nx), y = shape_y * (along * ty + across * ny);
+    return Vec2{{middle[0] + c * x - s * y, middle[1] + s * x + c * y}};
+  };
+  // The circle's point at angle f from the middle: cos f − cos β written as
+  // a product, exact to rounding however small both are.
+  const auto on_circle = [&](double f) {
+    return placed(std::sin(f) / half, 2.0 * std::sin((beta + f) / 2.0) * std::sin((beta - f) / 2.0) / half);
+  };
+  std::vector<BezierCurve> pieces;
+  for (int j = 0; j < count; ++j) {
+    const double from = -beta + 2.0 * h * j, centre = from + h;
+    // The tangents' meeting point: the circle's point at `centre` divided by
+    // cos h. One piece (a small arc): (ℓ / cos β) N, ℓ / cos β = sqrt(λ / (1 − λ)),
+    // exact where λ is (a quarter circle's corner).
+    const Vec2 apex = count == 1 ? placed(0.0, std::sqrt(lambda / (1.0 - lambda)))
+                                 : placed(std::sin(centre) / std::cos(h) / half,
+                                          (2.0 * std::sin((h + centre) / 2.0) * std::sin((h - centre) / 2.0) /
+                                               std::cos(h) +
+                                           2.0 * std::sin(beta / 2.0) * std::sin(beta / 2.0)) /
+                                              half);
+    const Vec2 first = j == 0 ? start : on_circle(from);
+    const Vec2 last = j + 1 == count ? end : on_circle(from + 2.0 * h);
+    const double weight = count == 1 ? std::sqrt(1.0 - lambda) : std::cos(h);
+    auto piece = BezierCurve::make(
+        PointArray::from_trusted(2, {first[0], first[1], apex[0], apex[1], last[0], last[1]}), {1.0, weight, 1.0});
     if (!piece) return piece.error();
-    pieces[p] = std::move(*piece);
+    pieces.push_back(std::move(*piece));
   }
   return path.add_pieces(std::move(pieces), end);
 }

@@ -13,6 +13,7 @@
 
 #include "casteljau/bezier/bernstein.hpp"
 #include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/bezier/split.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/core/tolerance.hpp"
@@ -158,19 +159,133 @@ class PieceSpeed {
   mutable std::vector<double> scratch_;
 };
 
-/// The curve's pieces with their speeds, and the interval budget of one call.
+/// A Möbius map of [0, 1] onto itself, σ = (m00 s + m01) / (m10 s + m11): how
+/// the parameter s of a balanced part of a rational piece (below) runs along
+/// the piece's own parameter σ.
+struct ParameterMap {
+  double m00 = 1.0, m01 = 0.0, m10 = 0.0, m11 = 1.0;
+
+  double operator()(double s) const { return (m00 * s + m01) / (m10 * s + m11); }
+  double inverse(double sigma) const { return (m11 * sigma - m01) / (m00 - m10 * sigma); }
+  /// This map after `inner` (first inner, then this), scaled to keep its entries near 1.
+  ParameterMap then(const ParameterMap& inner) const {
+    ParameterMap out{m00 * inner.m00 + m01 * inner.m10, m00 * inner.m01 + m01 * inner.m11,
+                     m10 * inner.m00 + m11 * inner.m10, m10 * inner.m01 + m11 * inner.m11};
+    const double largest = std::max({std::abs(out.m00), std::abs(out.m01), std::abs(out.m10), std::abs(out.m11)});
+    out.m00 /= largest, out.m01 /= largest, out.m10 /= largest, out.m11 /= largest;
+    return out;
+  }
+};
+
+/// One part of a piece and the part of the piece's parameter it covers.
+struct BalancedPart {
+  BezierCurve curve;
+  ParameterMap map;  // from the part's parameter to the piece's
+};
+
+/// A rational piece as parts whose weights in standard form differ by at most
+/// tolerances::kArcLengthWeightRatio, so that quadrature in each part's own
+/// parameter sees the whole of it: the weights made standard (w_i ρ^i with
+/// ρ = (w_0 / w_n)^(1/n), the Möbius reparameterization σ = ρ s / (ρ s + 1 - s),
+/// Farin §13.5, which keeps the curve and its points), then halved by de
+/// Casteljau (split_at) until balanced. A piece already balanced is kept as it
+/// is; polynomial pieces always are.
+void balanced_parts(BezierCurve piece, const ParameterMap& map, int depth, std::vector<BalancedPart>& out) {
+  const auto ratio = [](std::span<const double> w) {
+    const auto [low, high] = std::minmax_element(w.begin(), w.end());
+    return *high / *low;
+  };
+  if (!piece.is_rational() || (depth == 0 && ratio(piece.weights()) <= tolerances::kArcLengthWeightRatio)) {
+    out.push_back({std::move(piece), map});
+    return;
+  }
+  const std::span<const double> w = piece.weights();
+  const int n = piece.degree();
+  const double rho = std::pow(w[0] / w[n], 1.0 / n);
+  std::vector<double> standard(w.size());
+  // Weights as products of a power and a ratio, so that neither overflows.
+  for (int i = 0; i <= n; ++i) standard[i] = w[i] / w[0] * std::pow(rho, i);
+  const BezierCurve balanced = BezierCurve::from_trusted(piece.control_points(), standard);
+  const ParameterMap reparameterized = map.then({rho, 0.0, rho - 1.0, 1.0});
+  // 64 halvings take any ratio of valid weights (1e100 at most) to 1.
+  if (ratio(standard) <= tolerances::kArcLengthWeightRatio || depth >= 64) {
+    out.push_back({balanced, reparameterized});
+    return;
+  }
+  auto [left, right] = split_at(balanced, 0.5).value();
+  balanced_parts(left, reparameterized.then({0.5, 0.0, 0.0, 1.0}), depth + 1, out);
+  balanced_parts(right, reparameterized.then({0.5, 0.5, 0.0, 1.0}), depth + 1, out);
+}
+
+/// The curve's pieces (rational ones as balanced parts) with their speeds,
+/// and the interval budget of one call. Part k covers span(k) of the curve's
+/// parameter; integrate and speed take the part's own parameter s,
+/// local(k, fraction of the span) and fraction(k, s) convert.
 class Quadrature {
  public:
-  explicit Quadrature(CurveView curve) : pieces_(to_bezier_pieces(curve)) {
-    speeds_.reserve(pieces_.pieces.size());
-    for (const BezierCurve& piece : pieces_.pieces) speeds_.emplace_back(piece);
+  explicit Quadrature(CurveView curve) {
+    BezierPieces pieces = to_bezier_pieces(curve);
+    std::vector<BalancedPart> parts;
+    for (std::size_t k = 0; k < pieces.pieces.size(); ++k) {
+      const std::size_t first = parts.size();
+      balanced_parts(std::move(pieces.pieces[k]), {}, 0, parts);
+      const Interval span{pieces.breakpoints[k], pieces.breakpoints[k + 1]};
+      const double siblings = static_cast<double>(parts.size() - first);
+      double lower = 0.0;  // where the part starts on the piece: where the one before ends
+      for (std::size_t p = first; p < parts.size(); ++p) {
+        const double upper = p + 1 == parts.size() ? 1.0 : std::clamp(parts[p].map(1.0), lower, 1.0);
+        const ParameterMap& map = parts[p].map;
+        const bool identity = map.m01 == 0.0 && map.m10 == 0.0 && map.m00 == map.m11;
+        maps_.push_back({map, {lower, upper}, span, siblings, identity});
+        lower = upper;
+      }
+    }
+    speeds_.reserve(parts.size());
+    for (const BalancedPart& part : parts) speeds_.emplace_back(part.curve);
   }
 
-  std::size_t size() const { return pieces_.pieces.size(); }
-  Interval span(std::size_t k) const { return {pieces_.breakpoints[k], pieces_.breakpoints[k + 1]}; }
+  std::size_t size() const { return maps_.size(); }
+  /// The span of part k's piece on the curve, and the part of the piece's
+  /// parameter (on [0, 1]) the part covers: [1, 1] for parts narrower than its
+  /// resolution next to 1 (weights 1, 1e20, 1 put half the curve within 1e-21
+  /// of a piece's end).
+  Interval piece(std::size_t k) const { return maps_[k].piece; }
+  Interval covers(std::size_t k) const { return maps_[k].covers; }
   const PieceSpeed& speed(std::size_t k) const { return speeds_[k]; }
+  /// Part k's share of a tolerance over `range` of the curve's parameter
+  /// (width > 0): its piece's share (the piece's width inside the range over
+  /// the range's), divided evenly among the piece's parts, whose widths say
+  /// nothing of their lengths.
+  double share(std::size_t k, Interval range) const {
+    const Interval piece = maps_[k].piece;
+    const double inside = std::min(range.upper, piece.upper) - std::max(range.lower, piece.lower);
+    return std::max(inside, 0.0) / range.length() / maps_[k].siblings;
+  }
+  /// Part k's parameter s at the piece's parameter σ (inside covers(k)).
+  double local(std::size_t k, double sigma) const {
+    const PartMap& m = maps_[k];
+    const double s = m.map.inverse(sigma);
+    // 0 / 0 where the map's entries have lost 1 - σ to rounding: the nearer end.
+    if (std::isnan(s)) return sigma - m.covers.lower <= m.covers.upper - sigma ? 0.0 : 1.0;
+    return std::clamp(s, 0.0, 1.0);
+  }
+  /// Part k's parameter nearest to s whose curve parameter is a double: s
+  /// itself for parts of polynomial or balanced pieces kept whole.
+  double representable(std::size_t k, double s) const {
+    const PartMap& m = maps_[k];
+    // Parts narrower than the parameter resolves have one parameter for all s.
+    if (m.identity || m.covers.lower == m.covers.upper || s <= 0.0 || s >= 1.0) return s;
+    const double sigma = (parameter(k, s) - m.piece.lower) / m.piece.length();
+    return local(k, std::clamp(sigma, m.covers.lower, m.covers.upper));
+  }
+  /// The curve's parameter at part k's parameter s.
+  double parameter(std::size_t k, double s) const {
+    const PartMap& m = maps_[k];
+    const double sigma = s <= 0.0 ? m.covers.lower : s >= 1.0 ? m.covers.upper : m.map(s);
+    return sigma >= 1.0 ? m.piece.upper : m.piece.lerp(std::clamp(sigma, m.covers.lower, m.covers.upper));
+  }
 
-  /// The length of piece k between its local parameters a <= b, within tolerance.
+  /// The length of part k between its parameters a <= b, within tolerance.
   /// An interval is accepted when the Gauss and Kronrod rules agree within
   /// its share of the tolerance (K15 kept); otherwise its halves are
   /// computed, and their Kronrod sum is accepted when it agrees with the
@@ -235,7 +350,16 @@ class Quadrature {
     }
     return {a, b, tolerance, kronrod * half, gauss * half};
   }
-  BezierPieces pieces_;
+  /// The part of the piece's parameter a part covers, [lower, upper], and
+  /// how; the piece's span on the curve and its number of parts.
+  struct PartMap {
+    ParameterMap map;
+    Interval covers;
+    Interval piece;
+    double siblings;
+    bool identity;  // the piece kept whole: s is the piece's own parameter
+  };
+  std::vector<PartMap> maps_;
   std::vector<PieceSpeed> speeds_;
   std::vector<Part> stack_;
   long intervals_ = 0;
@@ -274,11 +398,24 @@ Expected<double> length_over(Quadrature& quadrature, Interval range, double tole
   const double width = range.length();
   if (width == 0.0) return 0.0;
   for (std::size_t k = 0; k < quadrature.size(); ++k) {
-    const Interval span = quadrature.span(k);
-    const double lower = std::max(range.lower, span.lower), upper = std::min(range.upper, span.upper);
-    if (!(lower < upper)) continue;
-    const double a = (lower - span.lower) / span.length(), b = upper == span.upper ? 1.0 : (upper - span.lower) / span.length();
-    auto piece = quadrature.integrate(k, a, b, tolerance * ((upper - lower) / width));
+    // The range on the piece's parameter, then on the part's.
+    const Interval span = quadrature.piece(k);
+    if (range.upper < span.lower || range.lower > span.upper) continue;
+    const double from = range.lower <= span.lower ? 0.0 : (range.lower - span.lower) / span.length();
+    const double to = range.upper >= span.upper ? 1.0 : (range.upper - span.lower) / span.length();
+    const Interval covers = quadrature.covers(k);
+    double a = 0.0, b = 1.0;
+    if (covers.lower == covers.upper) {
+      // Narrower than the parameter resolves: in the range when its place is
+      // in (from, to] (ranges that meet there count it once).
+      if (!(from < covers.upper && covers.lower <= to)) continue;
+    } else {
+      const double lower = std::max(from, covers.lower), upper = std::min(to, covers.upper);
+      if (!(lower < upper)) continue;
+      if (lower > covers.lower) a = quadrature.local(k, lower);
+      if (upper < covers.upper) b = quadrature.local(k, upper);
+    }
+    auto piece = quadrature.integrate(k, a, b, tolerance * quadrature.share(k, range));
     if (!piece) return piece;
     total += *piece;
   }
@@ -295,8 +432,7 @@ struct Cumulative {
 Expected<Cumulative> cumulative_lengths(Quadrature& quadrature, Interval domain, double tolerance) {
   Cumulative result;
   for (std::size_t k = 0; k < quadrature.size(); ++k) {
-    const Interval span = quadrature.span(k);
-    auto piece = quadrature.integrate(k, 0.0, 1.0, tolerance * (span.length() / domain.length()));
+    auto piece = quadrature.integrate(k, 0.0, 1.0, tolerance * quadrature.share(k, domain));
     if (!piece) return piece.error();
     result.before.push_back(result.total);
     result.lengths.push_back(*piece);
@@ -309,13 +445,18 @@ Expected<Cumulative> cumulative_lengths(Quadrature& quadrature, Interval domain,
 /// |L - s| <= tolerance: the piece from the running sums, then safeguarded
 /// Newton on g(t) = L(piece start, t) - r inside it (each L within tolerance / 4).
 Expected<double> solve_for_length(Quadrature& quadrature, const Cumulative& sums, double s, double tolerance) {
+  // The first part that reaches s within the tolerance: of parts too short
+  // to matter (a corner turned within 1e-50 of the parameter), the one whose
+  // parameter is still a double.
   std::size_t k = 0;
-  while (k + 1 < sums.lengths.size() && sums.before[k] + sums.lengths[k] < s) ++k;
-  const Interval span = quadrature.span(k);
+  while (k + 1 < sums.lengths.size() && sums.before[k] + sums.lengths[k] < s - tolerance / 4) ++k;
   const double r = std::clamp(s - sums.before[k], 0.0, sums.lengths[k]);
-  if (sums.lengths[k] == 0.0) return span.lower;
+  if (sums.lengths[k] == 0.0) return quadrature.parameter(k, 0.0);
   double lo = 0.0, hi = 1.0, t = r / sums.lengths[k];
   for (int iteration = 0; iteration < 200; ++iteration) {
+    // The length is measured to the parameter that will be returned: a
+    // balanced part's parameter first rounded to the curve's.
+    t = quadrature.representable(k, t);
     auto length = quadrature.integrate(k, 0.0, t, tolerance / 4);
     if (!length) return length.error();
     const double g = *length - r;
@@ -327,7 +468,7 @@ Expected<double> solve_for_length(Quadrature& quadrature, const Cumulative& sums
     if (next == t || !(lo < hi)) break;  // the bracket is down to one ulp
     t = next;
   }
-  return span.lerp(t);
+  return quadrature.parameter(k, t);
 }
 
 }  // namespace

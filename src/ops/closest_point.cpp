@@ -589,6 +589,24 @@ Expected<std::vector<NearestPoint>> local_closest_points(CurveView curve, std::s
     const NearestPoint start = closest_point(curve, query).value();
     result.push_back(start);
   }
+  // One minimum found twice (a root of the slope just before a knot, and the
+  // knot): the nearer of the two is kept, at equal distances the first.
+  double scale = std::max(size_of(curve), tolerances::kScaleFloor);
+  for (std::size_t j = 0; j < d; ++j) scale = std::max(scale, std::abs(q[j]));
+  std::vector<NearestPoint> distinct;
+  for (NearestPoint& candidate : result) {
+    if (!distinct.empty()) {
+      NearestPoint& last = distinct.back();
+      double gap = 0.0;
+      for (std::size_t j = 0; j < d; ++j) gap = std::max(gap, std::abs(candidate.point[j] - last.point[j]));
+      if (gap <= tolerances::kClosestPointSameMinimum * scale) {
+        if (candidate.distance < last.distance) last = std::move(candidate);
+        continue;
+      }
+    }
+    distinct.push_back(std::move(candidate));
+  }
+  result = std::move(distinct);
   const auto global = std::min_element(result.begin(), result.end(), [](const NearestPoint& x, const NearestPoint& y) {
     return x.distance < y.distance || (x.distance == y.distance && x.parameter < y.parameter);
   });

@@ -36,6 +36,14 @@ model two.json '{"models": [{"type": "bezier", "control_points": [[0,0],[3,4]]},
 check "one line per curve" "$(printf '5\n3')" length "$work/two.json"
 printf '0,0\n6,8\n' >"$work/line.csv"
 check "a CSV polygon" "10" length "$work/line.csv"
+# Weights 1, 1e20, 1: the conic hugs its control polygon, 2 sqrt 2 long to
+# 1e-20 (issue 39: it printed 0); 1e10 was refused for its quadrature budget.
+printf '{"type": "bezier", "control_points": [[0, 0], [1, 1], [2, 0]], "weights": [1, 1e20, 1]}' >"$work/corner.json"
+out=$("$casteljau" length "$work/corner.json" 2>&1)
+/usr/bin/python3 -c "import math, sys; sys.exit(abs(float('$out') - 2 * math.sqrt(2)) > 1e-11)" ||
+  { echo "FAIL: length of weights 1, 1e20, 1: $out"; failures=$((failures + 1)); }
+printf '{"type": "bezier", "control_points": [[0, 0], [1, 1], [2, 0]], "weights": [1, 1e10, 1]}' >"$work/corner.json"
+"$casteljau" length "$work/corner.json" >/dev/null 2>&1 || { echo "FAIL: length of weights 1, 1e10, 1 refused"; failures=$((failures + 1)); }
 "$casteljau" length "$examples/semicircle.json" -o "$work/length.txt" 2>"$work/stderr" &&
   [[ $(wc -l <"$work/length.txt") -eq 1 ]] || { echo "FAIL: -o"; failures=$((failures + 1)); }
 

@@ -19,6 +19,7 @@
 #include <fmt/format.h>
 
 #include "casteljau/bezier/evaluate.hpp"
+#include "casteljau/ops/arc_length.hpp"
 
 namespace casteljau {
 namespace {
@@ -172,6 +173,52 @@ TEST(SvgPath, DegenerateArcs) {
   const auto omitted = read_path("M0 0 A5 5 0 0 1 0 0 L1 1");
   ASSERT_EQ(pieces_of(omitted, 0), 1u);
   EXPECT_EQ(path_points(omitted, 0, 0), (Flat{0, 0, 1, 1}));
+}
+
+TEST(SvgPath, ArcsOfHugeRadiiKeepTheirSagittaAndTinyRadiiGrow) {
+  // Issue 39: M0 0 A R R 0 0 1 10 0 put the middle of the arc 6e-5 off at
+  // R = 1e12 (a centre 1e12 away rounds to 1e-4) and made a length of 16384
+  // at R = 1e20. The arc bulges by the sagitta R - sqrt(R^2 - 25) =
+  // 25 / (R + sqrt(R^2 - 25)) to the right of the chord (sweep 1: the
+  // positive way), its length is 2 R asin(5 / R).
+  for (const double r : {1e3, 1e10, 1e12, 1e15, 1e20, 1e99}) {
+    const auto path = read_path(fmt::format("M0 0 A{0} {0} 0 0 1 10 0", r));
+    ASSERT_EQ(pieces_of(path, 0), 1u) << r;
+    const BezierCurve& arc = path.subpaths[0].curve.pieces()[0];
+    const double sagitta = 25.0 / (r + std::sqrt(r * r - 25.0));
+    const Point middle = point_at(arc, 0.5);
+    EXPECT_NEAR(middle[0], 5.0, 1e-15 * 5.0) << r;
+    EXPECT_NEAR(middle[1], -sagitta, 1e-13 * sagitta) << r;
+    const double length = arc_length(arc, Tolerance{1e-12}).value();
+    EXPECT_NEAR(length, 2.0 * r * std::asin(5.0 / r), 2e-12) << r;
+  }
+  // The same arc the other way bulges to the left.
+  const auto left = read_path("M0 0 A1e12 1e12 0 0 0 10 0");
+  EXPECT_NEAR(point_at(left.subpaths[0].curve.pieces()[0], 0.5)[1], 1.25e-11, 1e-24);
+  // An ellipse of radii 1e12 and 3e12 turned by 30 degrees, the chord of 10
+  // along its first axis: near the end of its second axis the ellipse falls
+  // away from the chord by 3e12 (1 - sqrt(1 - 25 / 1e24)), to the chord's
+  // right (sin 30, -cos 30); the chord's end is 30 degrees to rounding
+  // (1e-16 of 10), which leaves the sagitta right to ~1e-5.
+  const auto tilted = read_path("M0 0 A1e12 3e12 30 0 1 8.660254037844387 5");
+  ASSERT_EQ(pieces_of(tilted, 0), 1u);
+  const Point bulge = point_at(tilted.subpaths[0].curve.pieces()[0], 0.5);
+  const double ellipse_sagitta = 3e12 * (25.0 / 1e24) / (1.0 + std::sqrt(1.0 - 25.0 / 1e24));
+  const double along = (bulge[0] - 4.330127018922193) * std::sqrt(0.75) + (bulge[1] - 2.5) * 0.5;
+  const double across = (bulge[0] - 4.330127018922193) * 0.5 - (bulge[1] - 2.5) * std::sqrt(0.75);
+  EXPECT_NEAR(along, 0.0, 1e-14);
+  EXPECT_NEAR(across, ellipse_sagitta, 1e-4 * ellipse_sagitta);
+  // Radii of 1e-160 and below (their squares underflow; 5e-324 is the least
+  // double) grow to the half circle of radius 5 around (5, 0), through (5, -5).
+  for (const char* r : {"1e-160", "1e-300", "5e-324"}) {
+    const auto path = read_path(fmt::format("M0 0 A{0} {0} 0 0 1 10 0", r));
+    ASSERT_FALSE(path.error.has_value()) << r << ": " << path.error->message;
+    ASSERT_EQ(pieces_of(path, 0), 2u) << r;
+    EXPECT_LE(off_circle(path.subpaths[0], 5, 0, 5), 1e-12 * 10) << r;
+    const Flat joint = path_points(path, 0, 1);
+    EXPECT_NEAR(joint[0], 5, 1e-14) << r;
+    EXPECT_NEAR(joint[1], -5, 1e-14) << r;
+  }
 }
 
 /// SVG's centre parameterization (implementation notes B.2.4 and B.2.5),

@@ -160,6 +160,66 @@ RC_GTEST_PROP(ArcLength, LiesBetweenChordAndPolygonAndAddsUp, ()) {
             3 * tolerance);
 }
 
+TEST(ArcLength, OfRationalCurvesWithExtremeWeights) {
+  // Issue 39: (0,0), (1,1), (2,0) with weights 1, w, 1 gave a length of 0 for
+  // w = 1e20 and 1e50 (all but the corner within 1e-10 of the parameter's
+  // ends) and was refused for w = 1e10. The conic is convex and symmetric, and
+  // passes through (1, h), h = w / (1 + w), with a horizontal tangent: its
+  // length lies between the inscribed polygon (0,0), (1,h), (2,0) and the
+  // circumscribed one (0,0), (h,h), (2-h,h), (2,0) (both exact bounds; for
+  // w >= 1e20 they agree to rounding), and half of it is reached at t = 1/2.
+  for (const double w : {1e5, 1e10, 1e20, 1e50}) {
+    const double h = w / (1.0 + w);
+    const double below = 2.0 * std::sqrt(1.0 + h * h), above = 2.0 * std::sqrt(2.0) * h + 2.0 * (1.0 - h);
+    for (const std::vector<double>& weights : {std::vector<double>{1.0, w, 1.0}, std::vector<double>{1.0 / std::sqrt(w), std::sqrt(w), 1.0 / std::sqrt(w)}}) {
+      const BezierCurve corner = bezier({{0, 0}, {1, 1}, {2, 0}}, weights);
+      const double tolerance = 1e-12;
+      const double length = arc_length(corner, Tolerance{tolerance}).value();
+      EXPECT_GE(length, below - tolerance) << w;
+      EXPECT_LE(length, above + tolerance) << w;
+      EXPECT_NEAR(arc_length(corner, Interval{0.0, 0.5}, Tolerance{tolerance}).value(), length / 2, tolerance) << w;
+      // Where the curve turns its corner it barely moves (|C'(1/2)| = 2 / (1 + w)):
+      // the parameter of half the length is known only through its point,
+      // within the tolerance of (1, h).
+      const Point apex{1.0, h};
+      const double half = parameter_at_length(corner, length / 2, Tolerance{tolerance}).value();
+      EXPECT_LE(distance(point_at(corner, half), apex), 2 * tolerance) << w;
+      const double middle = equal_arc_length_parameters(corner, 3, Tolerance{tolerance}).value()[1];
+      EXPECT_LE(distance(point_at(corner, middle), apex), 2 * tolerance) << w;
+    }
+  }
+  // The other way: weights 1, 1e-50, 1 leave the chord by 1e-50.
+  const BezierCurve flat = bezier({{0, 0}, {1, 1}, {2, 0}}, {1.0, 1e-50, 1.0});
+  EXPECT_NEAR(arc_length(flat, Tolerance{1e-12}).value(), 2.0, 1e-12);
+}
+
+/// A random weight, log-uniform over the valid range [1e-50, 1e50].
+double extreme_weight() { return std::pow(10.0, *rc::gen::inRange(-500, 501) / 10.0); }
+
+RC_GTEST_PROP(ArcLength, OfAnyWeightsLiesBetweenChordAndPolygonAndAddsUp, ()) {
+  // A plane rational curve with positive weights is variation diminishing: no
+  // line crosses it more often than its control polygon, so by Crofton's
+  // formula it is no longer than the polygon, and no shorter than its chord.
+  const int degree = *rc::gen::inRange(2, 5);
+  std::vector<std::vector<double>> rows;
+  std::vector<double> weights;
+  for (int i = 0; i <= degree; ++i) {
+    rows.push_back({*rc::gen::inRange(-100, 101) / 10.0, *rc::gen::inRange(-100, 101) / 10.0});
+    weights.push_back(extreme_weight());
+  }
+  const BezierCurve curve = bezier(rows, weights);
+  const double tolerance = 1e-9 * std::max(1.0, size_of(curve));
+  const double length = checked(arc_length(curve, Tolerance{tolerance}));
+  double polygon = 0.0;
+  for (std::size_t i = 0; i + 1 < rows.size(); ++i) polygon += std::hypot(rows[i + 1][0] - rows[i][0], rows[i + 1][1] - rows[i][1]);
+  RC_ASSERT(std::hypot(rows.back()[0] - rows[0][0], rows.back()[1] - rows[0][1]) <= length + tolerance);
+  RC_ASSERT(length <= polygon + tolerance);
+  const double u = *rc::gen::inRange(1, 1000) * 1e-3;
+  const double left = checked(arc_length(curve, Interval{0.0, u}, Tolerance{tolerance}));
+  const double right = checked(arc_length(curve, Interval{u, 1.0}, Tolerance{tolerance}));
+  RC_ASSERT(std::abs(left + right - length) <= 3 * tolerance);
+}
+
 TEST(ArcLength, RefusesBadRequestsNamingThem) {
   const BezierCurve parabola = bezier({{0, 0}, {1, 0}, {2, 4}});
   EXPECT_EQ(arc_length(parabola, Tolerance{0.0}).error().message,

@@ -462,6 +462,24 @@ def test_piecewise_bezier_curve():
         c.PiecewiseBezierCurve([first, c.BezierCurve([[0, 0, 0]])])
 
 
+def test_piecewise_bezier_curve_from_model_json_lists():
+    # Issue 39: the nested lists of model JSON's "pieces" were refused.
+    pieces = [[[0, 0], [1, 1], [2, 0]], [[2, 0], [3, -1], [4, 0], [5, 1]]]
+    curve = c.PiecewiseBezierCurve(pieces)
+    assert curve == c.PiecewiseBezierCurve([c.BezierCurve(p) for p in pieces])
+    assert curve == c.parse_models_json('{"type": "piecewise_bezier", "pieces": %s}' % pieces)[0]
+    # Mixed with BezierCurve objects, and as one (m, n, d) numpy array.
+    assert c.PiecewiseBezierCurve([c.BezierCurve(pieces[0]), np.array(pieces[1])]) == curve
+    lines = c.PiecewiseBezierCurve(np.array([[[0, 0], [1, 0]], [[1, 0], [1, 1]]]))
+    assert lines.size == 2 and c.point_at(lines, 1.5).tolist() == [1.0, 0.5]
+    with pytest.raises(ValueError, match=r"coordinate 0 of pieces\[1\] 0 is NaN"):
+        c.PiecewiseBezierCurve([pieces[0], [[np.nan, 0], [1, 1]]])
+    with pytest.raises(ValueError, match=r"pieces\[0\] must be an \(n, d\) array"):
+        c.PiecewiseBezierCurve([[1, 2, 3]])
+    with pytest.raises(ValueError, match="got a string"):
+        c.PiecewiseBezierCurve("abc")
+
+
 # --- bad input and dtypes ----------------------------------------------------------------------------------
 
 

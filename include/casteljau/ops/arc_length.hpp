@@ -15,6 +15,12 @@
 // Where the speed vanishes (a cusp, a repeated control point) the halving
 // concentrates the intervals there. The speed of a rational piece comes from
 // its homogeneous form, C' = (A' w - A w') / w^2 (The NURBS Book eq. 4.7).
+// A rational piece whose weights differ by more than 16 in standard form
+// (weights 1, 1e20, 1 run the whole curve but its corner within 1e-20 of the
+// parameter's ends, where 15 nodes never look) is first halved into parts of
+// balanced weights, each integrated in its own Möbius parameter; where a
+// part lies closer to a piece's end than doubles can resolve (within 1e-16
+// of 1), parameter_at_length answers with the nearest parameter doubles hold.
 
 #include <cstddef>
 #include <vector>

@@ -46,6 +46,15 @@ inline constexpr double kDefaultArcLengthRelativeTolerance = 1e-12;
 /// than computed for minutes.
 inline constexpr long kMaxArcLengthIntervals = 1L << 22;
 
+/// A rational piece whose weights, in standard form (the end weights made 1 by
+/// a Möbius reparameterization, Farin §13.5), differ by more than this ratio
+/// is halved until they do not, before quadrature (ops/arc_length): weights
+/// (1, 1e20, 1) put the whole curve but its corner within 1e-10 of the
+/// parameter's ends, where 15 nodes see only the corner (the length came out
+/// 0). Each halving takes about the square root of the ratio; the NURBS
+/// circle's sqrt(2) and every conic of moderate weights stay one piece.
+inline constexpr double kArcLengthWeightRatio = 16.0;
+
 // --- Arc fitting (ops/arc_spline) --------------------------------------------
 
 /// Bisection steps on the end of the longest certified biarc from a point:
@@ -146,6 +155,14 @@ inline constexpr double kIntersectionContactRate = 1e-2;
 /// room; a near tie that close is a tie at any accuracy users ask for.
 /// Dimensionless (a fraction of the largest squared distance).
 inline constexpr double kClosestPointTieSlack = 64.0 * 2.220446049250313e-16;
+
+/// Two local minima of the distance (ops/closest_point, local_closest_points)
+/// whose points are closer than this fraction of the scale (the curve's size
+/// or the query's coordinates) are one minimum found twice: a root of the
+/// slope a few ulps before a knot and the knot itself, or the two sides of a
+/// double root. Two true minima are parted by a maximum, farther apart than
+/// the 1e-8 of a piece a double root is known to. Dimensionless.
+inline constexpr double kClosestPointSameMinimum = 1e-9;
 
 /// Resolution, in a Bézier piece's parameter t in [0, 1], of the roots that
 /// inflections, curvature extrema and cusps are found at (ops/inflections,
