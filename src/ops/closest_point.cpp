@@ -590,16 +590,20 @@ Expected<std::vector<NearestPoint>> local_closest_points(CurveView curve, std::s
     result.push_back(start);
   }
   // One minimum found twice (a root of the slope just before a knot, and the
-  // knot): the nearer of the two is kept, at equal distances the first.
+  // knot): the nearer of the two is kept, at equal distances the first. Both
+  // the points and the parameters must agree: a double point of the curve is
+  // two minima at one point.
   double scale = std::max(size_of(curve), tolerances::kScaleFloor);
   for (std::size_t j = 0; j < d; ++j) scale = std::max(scale, std::abs(q[j]));
+  const double width = curve.domain().length();
   std::vector<NearestPoint> distinct;
   for (NearestPoint& candidate : result) {
     if (!distinct.empty()) {
       NearestPoint& last = distinct.back();
       double gap = 0.0;
       for (std::size_t j = 0; j < d; ++j) gap = std::max(gap, std::abs(candidate.point[j] - last.point[j]));
-      if (gap <= tolerances::kClosestPointSameMinimum * scale) {
+      if (gap <= tolerances::kClosestPointSameMinimum * scale &&
+          std::abs(candidate.parameter - last.parameter) <= tolerances::kClosestPointSameMinimum * width) {
         if (candidate.distance < last.distance) last = std::move(candidate);
         continue;
       }

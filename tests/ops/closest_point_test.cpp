@@ -280,9 +280,11 @@ RC_GTEST_PROP(ClosestPoint, LocalMinimaNearTangentJointsAreDistinct, ()) {
                                           {coordinate(), coordinate()}})})
           .value();
   const auto minima = local_closest_points(joined, std::vector<double>{jx - reach * dy, jy + reach * dx}).value();
+  // (A curve may pass one point twice: two minima there, far apart in u.)
   for (std::size_t i = 0; i < minima.size(); ++i)
     for (std::size_t k = i + 1; k < minima.size(); ++k)
-      RC_ASSERT(distance(minima[i].point, minima[k].point) > 1e-6);
+      RC_ASSERT(distance(minima[i].point, minima[k].point) > 1e-6 ||
+                std::abs(minima[i].parameter - minima[k].parameter) > 1e-6);
 }
 
 TEST(ClosestPoint, FindsPointsNextToAnEndWhereTheVelocityVanishes) {

@@ -158,10 +158,11 @@ inline constexpr double kClosestPointTieSlack = 64.0 * 2.220446049250313e-16;
 
 /// Two local minima of the distance (ops/closest_point, local_closest_points)
 /// whose points are closer than this fraction of the scale (the curve's size
-/// or the query's coordinates) are one minimum found twice: a root of the
-/// slope a few ulps before a knot and the knot itself, or the two sides of a
-/// double root. Two true minima are parted by a maximum, farther apart than
-/// the 1e-8 of a piece a double root is known to. Dimensionless.
+/// or the query's coordinates) and whose parameters are closer than this
+/// fraction of the domain are one minimum found twice: a root of the slope a
+/// few ulps before a knot and the knot itself. Two true minima are parted by a
+/// maximum, farther apart than that in the parameter; a double point of the
+/// curve is two minima at one point, far apart in the parameter. Dimensionless.
 inline constexpr double kClosestPointSameMinimum = 1e-9;
 
 /// Resolution, in a Bézier piece's parameter t in [0, 1], of the roots that
