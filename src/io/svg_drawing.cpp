@@ -221,7 +221,12 @@ class Reader {
     Viewport viewport;
     if (view_box) viewport = Viewport{(*view_box)[2], (*view_box)[3]};
     else viewport = Viewport{*width, *height};
-    if (units == DrawingUnits::user) return std::pair{SvgMatrix{}, viewport};
+    // Models are y up (docs/formats.md, "The frame"): y is measured up from
+    // the page's bottom edge, the viewBox's (min-y + height), else the root's
+    // height, else y = 0; x is kept.
+    const auto upright = [](double bottom) { return SvgMatrix{1.0, 0.0, 0.0, -1.0, 0.0, bottom}; };
+    drawing_.page_bottom = view_box ? (*view_box)[1] + (*view_box)[3] : height->value_or(0.0);
+    if (units == DrawingUnits::user) return std::pair{upright(drawing_.page_bottom), viewport};
     // Millimetres: through the root's size, and its viewBox when it has one.
     if (!*width || !*height)
       return Error{fmt::format("{}: millimetres need the root <svg>'s width and height as absolute lengths "
@@ -233,7 +238,7 @@ class Reader {
                                                  root.attribute("height").value())),
                    ErrorKind::invalid_argument};
     const double mm = io_detail::kSvgMillimetresPerPixel;
-    if (!view_box) return std::pair{io_detail::svg_scale(mm, mm), viewport};  // a user unit is a px
+    if (!view_box) return std::pair{upright(*height_mm) * io_detail::svg_scale(mm, mm), viewport};  // a user unit is a px
     if ((*view_box)[2] == 0.0 || (*view_box)[3] == 0.0)
       return Error{fmt::format("{}: the root's viewBox has a zero width or height, its size in mm is undefined",
                                source_),
@@ -241,7 +246,7 @@ class Reader {
     auto map = io_detail::svg_view_box_map(*view_box, 0.0, 0.0, *width_mm, *height_mm,
                                            root.attribute("preserveAspectRatio").value());
     if (!map) return with_context(map.error(), fmt::format("{}, {}", source_, where(root)));
-    return std::pair{*map, viewport};
+    return std::pair{upright(*height_mm) * *map, viewport};
   }
 
   /// A nested <svg>, or a <symbol> instanced by <use> (whose width and height

@@ -18,9 +18,10 @@
 namespace casteljau {
 namespace {
 
-/// "x y" in shortest round-trip form (fmt's {} for a double), -0 as 0.
+/// "x y" of a model point in SVG's user space (y down: -y, exact), in
+/// shortest round-trip form (fmt's {} for a double), -0 as 0.
 void append_point(std::string& out, std::span<const double> p) {
-  fmt::format_to(std::back_inserter(out), "{} {}", p[0] == 0.0 ? 0.0 : p[0], p[1] == 0.0 ? 0.0 : p[1]);
+  fmt::format_to(std::back_inserter(out), "{} {}", p[0] == 0.0 ? 0.0 : p[0], p[1] == 0.0 ? 0.0 : -p[1]);
 }
 
 bool same_element(const SvgCurve& a, const SvgCurve& b) {
@@ -79,10 +80,17 @@ Expected<SvgText> write_svg_drawing(std::span<const SvgCurve> curves, Tolerance 
     written.push_back(std::move(cubics->curve));
   }
   if (curves.empty()) lower[0] = lower[1] = upper[0] = upper[1] = 0.0;
+  // The page: the curves' box grown by half the widest stroke, its bottom
+  // edge at y = 0 when no curve goes below it (a stroke along y = 0 shows
+  // half its width), so that reading the file (y = page bottom - y_svg,
+  // docs/formats.md "The frame") gives back the same doubles; a drawing
+  // reaching below y = 0 has its page's bottom under its lowest stroke.
   const double margin = widest / 2.0;
-  const double x = lower[0] - margin, y = lower[1] - margin;
+  const double x = lower[0] - margin;
+  const double top = upper[1] + margin, bottom = lower[1] >= 0.0 ? 0.0 : lower[1] - margin;
   const double width = std::max(upper[0] - lower[0] + 2 * margin, 1e-300);
-  const double height = std::max(upper[1] - lower[1] + 2 * margin, 1e-300);
+  const double height = std::max(top - bottom, 1e-300);
+  const double y = top == 0.0 ? 0.0 : -top;
   std::string& out = result.text;
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += fmt::format("<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" viewBox=\"{} {} {} {}\" "

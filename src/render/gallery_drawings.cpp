@@ -16,16 +16,6 @@
 namespace casteljau::render::detail {
 namespace {
 
-/// The piece with y negated: SVG's y points down, a figure's up.
-BezierCurve upright(const BezierCurve& piece) {
-  const PointArray& p = piece.control_points();
-  std::vector<double> flipped(p.coordinates().begin(), p.coordinates().end());
-  for (std::size_t i = 1; i < flipped.size(); i += 2) flipped[i] = -flipped[i];
-  return BezierCurve::make(PointArray::from_trusted(2, std::move(flipped)),
-                           std::vector<double>(piece.weights().begin(), piece.weights().end()))
-      .value();
-}
-
 Expected<GalleryFigure> svg_drawing_figure(const std::filesystem::path& examples_dir) {
   const auto drawing = read_svg_drawing(examples_dir / "sailboat.svg");
   if (!drawing) return drawing.error();
@@ -38,7 +28,7 @@ Expected<GalleryFigure> svg_drawing_figure(const std::filesystem::path& examples
   for (const SvgCurve& curve : drawing->curves) {
     CurveItem item{{}, solid(colors::black, 1.6), "", curve.element + (curve.id.empty() ? "" : "#" + curve.id)};
     for (const BezierCurve& piece : curve.curve.pieces()) {
-      const BezierCurve shown = upright(piece);
+      const BezierCurve& shown = piece;  // read upright (docs/formats.md, "The frame")
       ++pieces;
       rational += piece.is_rational() ? 1 : 0;
       if (shown.degree() > 1) {
@@ -57,8 +47,8 @@ Expected<GalleryFigure> svg_drawing_figure(const std::filesystem::path& examples
       "39_svg_drawing",
       fmt::format("examples/sailboat.svg read by read_svg_drawing: {} curves (one per subpath of each path and shape, "
                   "group transforms applied), {} Bézier pieces, {} of them exact rational quadratics (the arcs, "
-                  "circles, ellipses and rounded corners, polygons in red dashes; blue dashes for the others). Drawn "
-                  "with y up, where the file's points down.",
+                  "circles, ellipses and rounded corners, polygons in red dashes; blue dashes for the others), "
+                  "upright: y measured up from the page's bottom edge, where the file's points down.",
                   drawing->curves.size(), pieces, rational),
       std::move(figure)};
 }

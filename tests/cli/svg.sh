@@ -11,15 +11,17 @@ source "$(dirname "$0")/support/common.sh" "$@"
 
 # A square of side 4 drawn as a path in a group moved by (1, 2), and a line in
 # a 10 x 10 mm drawing whose viewBox is 0 0 20 20 (a user unit is 0.5 mm).
+# Read upright: y = 20 - y_file, up from the page's bottom edge.
 model square.svg '<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="10mm" viewBox="0 0 20 20">
 <g transform="translate(1 2)"><path id="sq" d="M0 0 h4 v4 h-4 z"/></g>
 <line x1="0" y1="0" x2="8" y2="6"/></svg>'
-check "eval reads each subpath" $'1,2\n5,2\n0,0\n8,6' eval "$work/square.svg" --at 0 --at 1
+check "eval reads each subpath" $'1,18\n5,18\n0,20\n8,14' eval "$work/square.svg" --at 0 --at 1
 check "length of each curve" $'16\n10' length "$work/square.svg"
 check "length in mm" $'8\n5' length "$work/square.svg" --units mm
 model one.svg '<svg width="10mm" height="10mm" viewBox="0 0 20 20"><line x1="0" y1="0" x2="8" y2="6"/></svg>'
-check "closest on a drawing with one subpath" $'query,t,distance,x,y\n0,0.5,0,2,1.5' \
-  closest "$work/one.svg" --units mm --point 2,1.5
+# In mm, from (0, 10) to (4, 7): the page is 10 mm high.
+check "closest on a drawing with one subpath" $'query,t,distance,x,y\n0,0.5,0,2,8.5' \
+  closest "$work/one.svg" --units mm --point 2,8.5
 # closest takes one curve: the drawing has two.
 expect_error "closest on two curves" "square.svg" closest "$work/square.svg" --point 0,0
 check "--units user is the default" $'16\n10' length "$work/square.svg" --units user

@@ -48,6 +48,7 @@
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_json.hpp"
+#include "casteljau/io/svg_drawing.hpp"
 #include "casteljau/nurbs/conics.hpp"
 #include "casteljau/surfaces/coons.hpp"
 #include "casteljau/surfaces/evaluate.hpp"
@@ -359,6 +360,34 @@ TEST(OcctExchange, InchesAreConvertedToMillimetresByTheReader) {
       EXPECT_NEAR(pole.X(), 25.4 * circle.control_points()[i][0], 1e-12 * 25.4 * 2);
       EXPECT_NEAR(pole.Y(), 25.4 * circle.control_points()[i][1], 1e-12 * 25.4 * 2);
     }
+  }
+}
+
+TEST(OcctExchange, AnSvgLetterStaysUprightInStepAndIges) {
+  // Issue 39: SVG is y down, STEP and IGES y up; an SVG converted to them
+  // came out mirrored. An "F" on a 10 x 10 page: OpenCASCADE must find its
+  // corners with the bar at the top (y = 10, out to x = 6), the middle arm
+  // reaching x = 5 at y = 4..6, the stem's foot at y = 0 (x = 0..2), and no
+  // corner of the mirrored F (6, 0).
+  const auto drawing = parse_svg_drawing(
+      "<svg xmlns='http://www.w3.org/2000/svg' viewBox='0 0 10 10'><path d='M0 0H6V2H2V4H5V6H2V10H0Z'/></svg>", "f.svg");
+  ASSERT_TRUE(drawing.has_value());
+  ASSERT_EQ(drawing->curves.size(), 1u);
+  for (const Format format : {Format::iges, Format::step}) {
+    SCOPED_TRACE(name_of(format));
+    const OcctReading reading = written_and_read({Model{drawing->curves[0].curve}}, format, ExchangeHeader{});
+    ASSERT_EQ(reading.curves.size(), 1u);
+    std::vector<std::pair<double, double>> corners;
+    const TColgp_Array1OfPnt& poles = reading.curves[0]->Poles();
+    for (int i = poles.Lower(); i <= poles.Upper(); ++i) corners.emplace_back(poles(i).X(), poles(i).Y());
+    const auto has = [&](double x, double y) {
+      return std::any_of(corners.begin(), corners.end(), [&](const auto& p) {
+        return std::abs(p.first - x) <= 1e-12 && std::abs(p.second - y) <= 1e-12;
+      });
+    };
+    for (const auto& [x, y] : std::vector<std::pair<double, double>>{{0, 10}, {6, 10}, {6, 8}, {5, 6}, {5, 4}, {0, 0}, {2, 0}})
+      EXPECT_TRUE(has(x, y)) << "(" << x << ", " << y << ")";
+    EXPECT_FALSE(has(6, 0));
   }
 }
 

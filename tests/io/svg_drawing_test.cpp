@@ -47,9 +47,14 @@ std::vector<std::string> problems_of(const std::string& body) {
   return messages;
 }
 
-Flat drawing_points(const SvgCurve& curve, std::size_t piece = 0) {
+/// A piece's control points in the file's user space (y down): the tests'
+/// roots have no viewBox or height unless they say, so the page's bottom is
+/// y = 0 and the file's y is -y (exactly).
+Flat drawing_points(const SvgCurve& curve, std::size_t piece = 0, double page_bottom = 0.0) {
   const auto c = curve.curve.pieces().at(piece).control_points().coordinates();
-  return {c.begin(), c.end()};
+  Flat file(c.begin(), c.end());
+  for (std::size_t i = 1; i < file.size(); i += 2) file[i] = page_bottom - file[i];
+  return file;
 }
 
 void expect_near(const Flat& actual, const Flat& expected, double tolerance = 1e-12) {
@@ -131,7 +136,7 @@ TEST(SvgDrawing, RectWithoutCornersIsFourLines) {
 void expect_on_ellipse(const BezierCurve& piece, double cx, double cy, double rx, double ry, double tolerance) {
   for (int k = 0; k <= 64; ++k) {
     const Point p = point_at(piece, k / 64.0);
-    const double x = (p[0] - cx) / rx, y = (p[1] - cy) / ry;
+    const double x = (p[0] - cx) / rx, y = (-p[1] - cy) / ry;  // the file's y: -y (page bottom 0)
     EXPECT_NEAR(std::hypot(x, y), 1.0, tolerance) << "at " << k << "/64";
   }
 }
@@ -164,10 +169,11 @@ TEST(SvgDrawing, CirclesAndEllipsesAreFourExactArcsClockwiseFromTheRight) {
   EXPECT_TRUE(circle.closed);
   ASSERT_EQ(circle.curve.pieces().size(), 4u);
   EXPECT_EQ(drawing_points(circle, 0).front(), 8.0);
-  // SVG 2 §10.3: starts at (cx + r, cy), then (cx, cy + r): clockwise on screen.
+  // SVG 2 §10.3: starts at (cx + r, cy), then (cx, cy + r): clockwise on
+  // screen, and in the model (y up), where the file's (3, 9) is (3, -9).
   const Point quarter = point_at(circle.curve.pieces()[0], 1.0);
   EXPECT_NEAR(quarter[0], 3.0, 4e-15);
-  EXPECT_NEAR(quarter[1], 9.0, 4e-15);
+  EXPECT_NEAR(quarter[1], -9.0, 4e-15);
   for (const auto& piece : circle.curve.pieces()) expect_on_ellipse(piece, 3, 4, 5, 5, 4e-15);
   for (const auto& piece : drawing.curves[1].curve.pieces()) expect_on_ellipse(piece, -1, 2, 4, 0.5, 4e-15);
 }
@@ -215,7 +221,7 @@ TEST(SvgDrawing, LengthUnitsAndPercentages) {
   expect_near(drawing_points(drawing.curves[2]), {96, 0, 96, 0}, 1e-13);
   const auto percent = read_drawing("<rect width='50%' height='25%'/><circle r='10%'/>",
                                   "<svg viewBox='0 0 200 100'>");
-  EXPECT_EQ(drawing_points(percent.curves.at(0), 1), (Flat{100, 0, 100, 25}));
+  EXPECT_EQ(drawing_points(percent.curves.at(0), 1, percent.page_bottom), (Flat{100, 0, 100, 25}));
   // r: 10% of sqrt((200² + 100²) / 2).
   EXPECT_NEAR(drawing_points(percent.curves.at(1), 0)[0], 0.1 * std::sqrt((200.0 * 200 + 100 * 100) / 2), 1e-12);
   EXPECT_EQ(problems_of("<rect width='2em' height='1'/>"),
@@ -226,26 +232,59 @@ TEST(SvgDrawing, LengthUnitsAndPercentages) {
                                      "viewBox, or its width and height in absolute units)"});
 }
 
+TEST(SvgDrawing, ModelsAreUprightWithYUpFromThePagesBottom) {
+  // Issue 39: SVG is y down, every other format and plot y up; a drawing read
+  // as its numbers came out mirrored. y is now measured up from the page's
+  // bottom edge: the viewBox's min-y + height, else the root's height, else 0.
+  const std::string body = "<path d='M0 10L20 30'/>";
+  const auto boxed = read_drawing(body, "<svg viewBox='5 -20 200 100'>");
+  EXPECT_EQ(boxed.page_bottom, 80.0);
+  EXPECT_EQ(boxed.curves.at(0).curve.pieces()[0].control_points().coordinates()[1], 70.0);
+  EXPECT_EQ(boxed.curves.at(0).curve.pieces()[0].control_points().coordinates()[3], 50.0);
+  const auto sized = read_drawing(body, "<svg width='100' height='1in'>");
+  EXPECT_EQ(sized.page_bottom, 96.0);
+  EXPECT_EQ(sized.curves.at(0).curve.pieces()[0].control_points().coordinates()[1], 86.0);
+  const auto unsized = read_drawing(body);
+  EXPECT_EQ(unsized.page_bottom, 0.0);
+  EXPECT_EQ(unsized.curves.at(0).curve.pieces()[0].control_points().coordinates()[1], -10.0);
+  // An "F" keeps its handedness: drawn on screen with its bar at the top and
+  // its arms to the right, it has them at the top and to the right in the
+  // model, and its outline, clockwise on screen, is clockwise in the model
+  // too: a negative signed area with y up (the file's own numbers, y down,
+  // give +68, which read as y up is the mirrored F).
+  const auto letter = read_drawing("<path d='M0 0H6V2H2V4H5V6H2V10H0Z'/>", "<svg viewBox='0 0 10 10'>");
+  const auto& f = letter.curves.at(0).curve;
+  double area = 0.0, top_right = 0.0;
+  for (const BezierCurve& piece : f.pieces()) {
+    const auto c = piece.control_points().coordinates();
+    area += c[0] * c[3] - c[2] * c[1];
+    if (c[1] == 10.0) top_right = std::max(top_right, c[0]);  // the bar along the top
+  }
+  EXPECT_EQ(area / 2, -34.0);   // clockwise with y up
+  EXPECT_EQ(top_right, 6.0);    // the bar is at the top, reaching right
+}
+
 TEST(SvgDrawing, MillimetresThroughTheRootsSizeAndViewBox) {
   const std::string body = "<path d='M0 0L200 100'/>";
   const auto user = read_drawing(body, "<svg width='100mm' height='50mm' viewBox='0 0 200 100'>");
-  EXPECT_EQ(drawing_points(user.curves.at(0)), (Flat{0, 0, 200, 100}));  // user units: the root's map not applied
+  EXPECT_EQ(drawing_points(user.curves.at(0), 0, user.page_bottom), (Flat{0, 0, 200, 100}));  // user units: the root's map not applied
   const auto mm = read_drawing(body, "<svg width='100mm' height='50mm' viewBox='0 0 200 100'>", DrawingUnits::millimetres);
-  expect_near(drawing_points(mm.curves.at(0)), {0, 0, 100, 50});
+  // Millimetres measure y up from the page's bottom edge, 50 mm below its top.
+  expect_near(drawing_points(mm.curves.at(0), 0, 50.0), {0, 0, 100, 50});
   EXPECT_EQ(mm.units, DrawingUnits::millimetres);
   // A square viewport: xMidYMid meet scales by 0.5 and centres vertically.
   const auto meet = read_drawing(body, "<svg width='100mm' height='100mm' viewBox='0 0 200 100'>",
                                DrawingUnits::millimetres);
-  expect_near(drawing_points(meet.curves.at(0)), {0, 25, 100, 75});
+  expect_near(drawing_points(meet.curves.at(0), 0, 100.0), {0, 25, 100, 75});
   const auto none = read_drawing(body, "<svg width='100mm' height='100mm' viewBox='0 0 200 100' "
                                      "preserveAspectRatio='none'>", DrawingUnits::millimetres);
-  expect_near(drawing_points(none.curves.at(0)), {0, 0, 100, 100});
+  expect_near(drawing_points(none.curves.at(0), 0, 100.0), {0, 0, 100, 100});
   const auto slice = read_drawing(body, "<svg width='100mm' height='100mm' viewBox='0 0 200 100' "
                                       "preserveAspectRatio='xMinYMin slice'>", DrawingUnits::millimetres);
-  expect_near(drawing_points(slice.curves.at(0)), {0, 0, 200, 100});
+  expect_near(drawing_points(slice.curves.at(0), 0, 100.0), {0, 0, 200, 100});
   // No viewBox: a user unit is a CSS pixel, 25.4 / 96 mm.
   const auto pixels = read_drawing(body, "<svg width='960' height='480'>", DrawingUnits::millimetres);
-  expect_near(drawing_points(pixels.curves.at(0)), {0, 0, 200 * 25.4 / 96, 100 * 25.4 / 96});
+  expect_near(drawing_points(pixels.curves.at(0), 0, 480 * 25.4 / 96), {0, 0, 200 * 25.4 / 96, 100 * 25.4 / 96});
   auto unsized = parse_svg_drawing("<svg viewBox='0 0 10 10'><path d='M0 0L1 1'/></svg>", "t.svg",
                                    DrawingUnits::millimetres);
   ASSERT_FALSE(unsized);
@@ -391,15 +430,17 @@ namespace {
 // Lines, quadratics and cubics written by write_svg_drawing read back as the
 // same doubles, piece by piece (shortest round-trip numbers, absolute commands).
 RC_GTEST_PROP(SvgWriter, PolynomialPiecesOfDegreeAtMostThreeRoundTripExactly, ()) {
+  // Drawings above y = 0 (the page's bottom edge stays there: y in [230, 1770]).
   const int count = *rc::gen::inRange(1, 6);
   std::vector<BezierCurve> pieces;
-  std::vector<double> start = {*rc::gen::inRange(-1000000, 1000000) * 1e-3, *rc::gen::inRange(-1000000, 1000000) * 1e-3};
+  std::vector<double> start = {*rc::gen::inRange(-1000000, 1000000) * 1e-3,
+                               1000.0 + *rc::gen::inRange(-1000000, 1000000) * 0.77e-3};
   for (int i = 0; i < count; ++i) {
     const int degree = *rc::gen::inRange(1, 4);
     std::vector<double> c = start;
     for (int k = 0; k < degree; ++k) {
       c.push_back(*rc::gen::inRange(-1000000, 1000000) * 1.37e-3);
-      c.push_back(*rc::gen::inRange(-1000000, 1000000) * 0.77e-3);
+      c.push_back(1000.0 + *rc::gen::inRange(-1000000, 1000000) * 0.77e-3);
     }
     start = {c[c.size() - 2], c.back()};
     pieces.push_back(BezierCurve::make(PointArray::make(2, std::move(c)).value()).value());
@@ -415,6 +456,31 @@ RC_GTEST_PROP(SvgWriter, PolynomialPiecesOfDegreeAtMostThreeRoundTripExactly, ()
   RC_ASSERT(back->curves.size() == 1u);
   RC_ASSERT(back->curves[0].curve == curves[0].curve);
   RC_ASSERT(back->curves[0].id == std::string("c"));
+}
+
+TEST(SvgWriter, DrawingsAreWrittenUprightOnAPageFromYZero) {
+  // Models are y up, SVG y down: the written file has -y, and its viewBox
+  // reaches down to y = 0 (the page's bottom edge, where reading measures y
+  // from) when no curve goes below it, else to the drawing's lowest point
+  // less half the stroke.
+  const auto written_box = [](double low, double high) {
+    const std::vector<SvgCurve> curves{SvgCurve{
+        PiecewiseBezierCurve::make({BezierCurve::make(PointArray::make({{1, low}, {3, high}}).value()).value()})
+            .value(),
+        false, "path", "", 0, FillRule::nonzero, 2.0}};
+    const std::string text = write_svg_drawing(curves, Tolerance{1e-6}).value().text;
+    const auto start = text.find("viewBox=\"") + 9;
+    return std::make_pair(text.substr(start, text.find('"', start) - start), parse_svg_drawing(text, "w.svg").value());
+  };
+  const auto [above, read_above] = written_box(5, 8);
+  EXPECT_EQ(above, "0 -9 4 9");  // x from 1 - 1, y from -(8 + 1) down to 0
+  EXPECT_EQ(read_above.curves.at(0).curve.pieces()[0].control_points().coordinates()[1], 5.0);
+  const auto [below, read_below] = written_box(-5, 8);
+  EXPECT_EQ(below, "0 -9 4 15");  // down to -5 - 1: read back moved up by 6
+  EXPECT_EQ(read_below.curves.at(0).curve.pieces()[0].control_points().coordinates()[1], 1.0);
+  const auto [touching, read_touching] = written_box(0, 8);
+  EXPECT_EQ(touching, "0 -9 4 9");  // a curve along y = 0 keeps the page's bottom there
+  EXPECT_EQ(read_touching.curves.at(0).curve.pieces()[0].control_points().coordinates()[1], 0.0);
 }
 
 }  // namespace

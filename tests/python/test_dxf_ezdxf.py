@@ -78,6 +78,26 @@ def test_ezdxf_reads_what_casteljau_writes(tmp_path, name):
     assert worst <= 1e-12, worst
 
 
+def test_an_svg_letter_stays_upright_in_dxf(tmp_path):
+    # Issue 39: SVG is y down, DXF y up; an SVG converted to DXF came out
+    # mirrored. An "F" on a 10 x 10 page, its bar along the top reaching to
+    # x = 6, its middle arm to x = 5: ezdxf must find the bar at the top
+    # (y = 10) and the arms pointing right, the page's bottom at y = 0.
+    drawing = tmp_path / "f.svg"
+    drawing.write_text('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">'
+                       '<path d="M0 0H6V2H2V4H5V6H2V10H0Z"/></svg>')
+    doc = ezdxf.readfile(convert_to_dxf(drawing, tmp_path / "f.dxf"))
+    (entity,) = list(doc.modelspace())
+    tool = entity.construction_tool()
+    points = np.array([list(tool.point(t))[:2] for t in np.linspace(tool.knots()[0], tool.knots()[-1], 401)])
+    at_top = points[np.isclose(points[:, 1], 10.0)]
+    assert at_top[:, 0].min() == pytest.approx(0.0, abs=1e-12) and at_top[:, 0].max() == pytest.approx(6.0)
+    arm = points[np.isclose(points[:, 1], 6.0)]
+    assert arm[:, 0].max() == pytest.approx(5.0)
+    assert points[:, 1].min() == pytest.approx(0.0, abs=1e-12)
+    assert points[np.isclose(points[:, 1], 0.0)][:, 0].max() == pytest.approx(2.0)  # the stem's foot
+
+
 def on_curve(model, points, scale):
     """The largest distance of `points` from the curve, relative to `scale`."""
     return max(c.closest_point(model, np.asarray(p, dtype=float))[1] for p in points) / scale

@@ -278,7 +278,8 @@ def test_model_json_round_trip_through_a_string_and_a_file(tmp_path):
 
 
 def test_read_models_reads_svg_drawings(tmp_path):
-    # One piecewise curve per subpath, the group's transform applied, y down:
+    # One piecewise curve per subpath, the group's transform applied, turned
+    # upright (y up from the page's bottom, here y = 0: the file's y negated):
     # the square's corners worked by hand.
     drawing = tmp_path / "d.svg"
     drawing.write_text('<svg xmlns="http://www.w3.org/2000/svg"><g transform="translate(1 2)">'
@@ -286,7 +287,7 @@ def test_read_models_reads_svg_drawings(tmp_path):
     models = c.read_models(drawing)
     assert len(models) == 3 and all(type(m) is c.PiecewiseBezierCurve for m in models)
     np.testing.assert_array_equal(c.points_at(models[0], np.array([0.0, 1.0, 2.0, 3.0, 4.0])),
-                                  [[1, 2], [5, 2], [5, 6], [1, 6], [1, 2]])
+                                  [[1, -2], [5, -2], [5, -6], [1, -6], [1, -2]])
     broken = tmp_path / "broken.svg"
     broken.write_text('<svg>\n<path id="p" d="M0 0 L1 x"/></svg>')
     with pytest.raises(ValueError, match=r"broken.svg, line 2, <path id='p'>: path data, character 9 \('x'\)"):

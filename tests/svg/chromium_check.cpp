@@ -100,10 +100,14 @@ std::vector<Case> read_corpus(const char* path) {
   return cases;
 }
 
-/// The curves Chromium draws as one element, as casteljau reads them.
+/// The curves Chromium draws as one element, as casteljau reads them, and
+/// where the model's y = 0 lies in the user space Chromium reports (y down):
+/// a point (x, y) of Chromium's is (x, page_bottom - y) of the models
+/// (docs/formats.md, "The frame").
 struct Element {
   std::string name;
   std::vector<PiecewiseBezierCurve> curves;
+  double page_bottom = 0.0;
 };
 
 /// A file's elements: an SVG drawing's curves grouped by the element that
@@ -116,7 +120,7 @@ std::vector<Element> elements_of(const std::string& path) {
     for (std::size_t i = 0; i < drawing.curves.size(); ++i) {
       const SvgCurve& c = drawing.curves[i];
       const bool same = i > 0 && c.line == drawing.curves[i - 1].line && c.id == drawing.curves[i - 1].id;
-      if (!same) elements.push_back({c.element + (c.id.empty() ? "" : "#" + c.id), {}});
+      if (!same) elements.push_back({c.element + (c.id.empty() ? "" : "#" + c.id), {}, drawing.page_bottom});
       elements.back().curves.push_back(c.curve);
     }
     return elements;
@@ -134,13 +138,13 @@ struct Gaps {
   double point = 0.0, arc_point = 0.0, length = 0.0;
   int failures = 0, cases = 0;
 };
-void compare(const std::string& label, const std::vector<PiecewiseBezierCurve>& ours, const nlohmann::json& theirs,
-             double scale, bool arcs, bool conic_shape, Gaps& gaps) {
+void compare(const std::string& label, const std::vector<PiecewiseBezierCurve>& ours, double page_bottom,
+             const nlohmann::json& theirs, double scale, bool arcs, bool conic_shape, Gaps& gaps) {
   double our_total = 0.0;
   for (const auto& curve : ours) our_total += arc_length(curve, Tolerance{1e-12 * scale}).value();
   double point_gap = 0.0;
   for (const auto& p : theirs.at("points")) {
-    const double q[2] = {p.at(0).get<double>(), p.at(1).get<double>()};
+    const double q[2] = {p.at(0).get<double>(), page_bottom - p.at(1).get<double>()};
     double nearest = INFINITY;
     for (const auto& curve : ours) nearest = std::min(nearest, closest_point(curve, q).value().distance);
     point_gap = std::max(point_gap, nearest / scale);
@@ -191,7 +195,10 @@ int compare_files(const std::string& folder, const nlohmann::json& reading, bool
           for (const auto& piece : c.pieces()) arcs = arcs || piece.is_rational();
       const std::string tag = elements[k].at("tag").get<std::string>();
       const bool conic_shape = arcs && (tag == "circle" || tag == "ellipse" || tag == "rect");
-      compare(name + " " + ours[k].name, ours[k].curves, elements[k], scale, arcs, conic_shape, gaps);
+      // A file casteljau wrote holds the models' points as x -y: its page's
+      // bottom is y = 0 of the originals' frame, whatever its viewBox.
+      compare(name + " " + ours[k].name, ours[k].curves, written ? 0.0 : ours[k].page_bottom, elements[k], scale,
+              arcs, conic_shape, gaps);
     }
   }
   std::printf("%s: largest point gap %.1e without arcs (bound %.0e), %.1e with arcs (bound %.0e), largest length "

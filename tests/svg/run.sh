@@ -34,6 +34,10 @@ echo "== drawings written =="
 # notebook_curve: degree 4; semicircle: rational; quad, spline: exact.
 cp "$examples"/notebook_curve.json "$examples"/semicircle.json "$examples"/quad.json "$examples"/spline.json \
    "$work/drawings/"
+# Text set in a font (y up, like every model): written upright, so Chromium's
+# points, y negated, lie on the glyphs (issue 39: the SVG was upside down).
+font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+if [ -f "$font" ]; then "$casteljau" text Fg --font "$font" --size 10 -o "$work/drawings/text_fg.json"; fi
 for original in "$work"/drawings/*; do
   name=$(basename "$original")
   "$casteljau" convert "$original" --to svg -o "$work/written/$name.svg" >/dev/null

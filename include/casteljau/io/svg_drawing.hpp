@@ -3,8 +3,10 @@
 // and basic shape (rect with rx/ry, circle, ellipse, line, polyline,
 // polygon), through groups, nested <svg> viewports and <use> references,
 // each subpath one curve placed in the root's user space by the transforms
-// on its element and every ancestor (the six transform functions), y down as
-// in the file. Arcs and the corners of rounded rects, circles and ellipses
+// on its element and every ancestor (the six transform functions), then
+// turned upright into the models' frame (y up, docs/formats.md "The frame"):
+// y = bottom - y_file, bottom the page's lower edge (the root viewBox's
+// min-y + height, else the root's height, else 0), x as in the file. Arcs and the corners of rounded rects, circles and ellipses
 // are exact rational quadratic pieces (io/svg_path.hpp). The XML is parsed by
 // pugixml (Debian's libpugixml-dev); the geometry is casteljau's.
 //
@@ -48,6 +50,11 @@ struct SvgCurve {
 struct SvgDrawing {
   std::vector<SvgCurve> curves;  ///< in document order
   DrawingUnits units = DrawingUnits::user;
+  /// The page's lower edge in the root's user units, y down as in the file
+  /// (the root viewBox's min-y + height, else the root's height, else 0): the
+  /// models' y = 0. A point (x, y) of the curves is (x, page_bottom - y) in the
+  /// file (DrawingUnits::user).
+  double page_bottom = 0.0;
   /// Errors inside elements, each "line 12, <path id='p'>: path data,
   /// character 5 ('x'): ...". SVG's rule: path data is drawn up to its first
   /// error, an element whose attributes are in error is not drawn.
