@@ -139,8 +139,9 @@ int convert_to_svg(const ConvertOptions& options) {
 /// --to dxf: each curve an exact SPLINE entity of an R2000 drawing.
 int convert_to_dxf(const ConvertOptions& options) {
   if (given(options.tolerance_option)) return fail("--tolerance applies to --to svg (the cubics' distance)");
-  const auto models = read_model_file(options.model, options.units);
-  if (!models) return fail(models.error());
+  const auto read = read_model_file_with_unit(options.model, options.units);
+  if (!read) return fail(read.error());
+  const std::vector<Model>* models = &read->models;
   for (std::size_t m = 0; m < models->size(); ++m) {
     const Model& model = (*models)[m];
     const std::string name = model_name(*models, m, options.model);
@@ -149,8 +150,9 @@ int convert_to_dxf(const ConvertOptions& options) {
       return fail(fmt::format("--to dxf: {} lives in R^{}, DXF holds plane and space curves", name,
                               dimension_of(model)));
   }
-  // $INSUNITS: millimetres when the drawing was read in mm, else unitless.
-  auto written = write_dxf_drawing(*models, options.units == "mm" ? 4 : 0);
+  // $INSUNITS: the unit the input states (millimetres when a drawing was
+  // read in mm, a DXF's own unit), else unitless.
+  auto written = write_dxf_drawing(*models, read->insunits);
   if (!written) return fail(with_context(written.error(), "--to dxf"));
   return write_output(options.output, *written);
 }
@@ -178,8 +180,30 @@ int convert_to_cad(const ConvertOptions& options, bool iges) {
   const char* format = iges ? "iges" : "step";
   if (given(options.tolerance_option))
     return fail(fmt::format("--tolerance applies to --to svg (the cubics' distance); --to {} is exact", format));
-  const auto models = read_model_file(options.model, options.units);
-  if (!models) return fail(models.error());
+  auto read = read_model_file_with_unit(options.model, options.units);
+  if (!read) return fail(read.error());
+  // The unit: millimetres or inches as the input states them; another length
+  // unit (a DXF in feet, metres...) converted to millimetres; none stated:
+  // the numbers labelled millimetres, which the summary says.
+  ExchangeHeader header;
+  std::string unit_text = "in millimetres";
+  double scale = 1.0;
+  if (read->insunits == 1) {
+    header.unit = ExchangeUnit::inch;
+    unit_text = "in inches";
+  } else if (read->insunits != 4 && dxf_unit_millimetres(read->insunits) > 0.0) {
+    const std::string from = dxf_unit_name(read->insunits);
+    scale = dxf_unit_millimetres(read->insunits);
+    read = read_model_file_with_unit(options.model, "mm");
+    if (!read) return fail(read.error());
+    unit_text = fmt::format("converted from {} to millimetres", from);
+  } else if (read->insunits != 4) {
+    unit_text = read->insunits == 0 ? "labelled millimetres (the input states no unit)"
+                                    : fmt::format("labelled millimetres (the input's unit, {}, is no length casteljau "
+                                                  "converts)",
+                                                  dxf_unit_name(read->insunits));
+  }
+  const std::vector<Model>* models = &read->models;
   std::size_t surfaces = 0;
   for (std::size_t m = 0; m < models->size(); ++m) {
     const Model& model = (*models)[m];
@@ -189,7 +213,6 @@ int convert_to_cad(const ConvertOptions& options, bool iges) {
                               model_name(*models, m, options.model), d, iges ? "IGES" : "STEP"));
     if (is_surface(model)) ++surfaces;
   }
-  ExchangeHeader header;
   const std::filesystem::path named = is_standard_output(options.output) ? options.model : options.output;
   header.file_name = named.filename().string();
   header.timestamp = exchange_timestamp();
@@ -198,10 +221,13 @@ int convert_to_cad(const ConvertOptions& options, bool iges) {
   if (int status = write_output(options.output, *written); status != 0) return status;
   const std::size_t curves = models->size() - surfaces;
   return write_summary(options.output,
-                       fmt::format("convert: {} curve{} and {} surface{} to {}, exact (every knot, control point and "
-                                   "weight as it is), in millimetres",
+                       fmt::format("convert: {} curve{} and {} surface{} to {}, exact ({}), {}",
                                    curves, curves == 1 ? "" : "s", surfaces, surfaces == 1 ? "" : "s",
-                                   iges ? "IGES 5.3 (entities 126 and 128)" : "STEP AP214"));
+                                   iges ? "IGES 5.3 (entities 126 and 128)" : "STEP AP214",
+                                   scale == 1.0 ? std::string("every knot, control point and weight as it is")
+                                                : fmt::format("knots and weights as they are, control points x {:g}",
+                                                              scale),
+                                   unit_text));
 }
 
 int run_convert(const ConvertOptions& options) {

@@ -17,6 +17,7 @@
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/io/drawing_units.hpp"
 #include "casteljau/io/model.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/render/write.hpp"
 
 namespace casteljau::cli {
@@ -63,6 +64,8 @@ Expected<DrawingUnits> drawing_units_option(const std::string& units);
 /// CSV point set or SVG drawing) in the --units given ("" is user units):
 /// "--units: 'cm' is not user or mm".
 Expected<std::vector<Model>> read_model_file(const std::string& path, const std::string& units);
+/// read_model_file with the unit the file states (io/model_file.hpp).
+Expected<UnitModels> read_model_file_with_unit(const std::string& path, const std::string& units);
 
 /// The help of a MODEL argument that takes any model file.
 inline constexpr const char* kModelFileHelp =

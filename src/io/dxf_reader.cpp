@@ -561,6 +561,59 @@ Expected<DxfDrawing> parse_dxf_drawing(std::string_view text, const std::string&
   return drawing;
 }
 
+double dxf_unit_millimetres(int insunits) {
+  switch (insunits) {
+    case 1: return 25.4;        // inches
+    case 2: return 304.8;       // feet
+    case 3: return 1609344.0;   // miles
+    case 4: return 1.0;         // millimetres
+    case 5: return 10.0;        // centimetres
+    case 6: return 1000.0;      // metres
+    case 7: return 1e6;         // kilometres
+    case 8: return 25.4e-6;     // microinches
+    case 9: return 0.0254;      // mils
+    case 10: return 914.4;      // yards
+    case 11: return 1e-7;       // angstroms
+    case 12: return 1e-6;       // nanometres
+    case 13: return 1e-3;       // microns
+    case 14: return 100.0;      // decimetres
+    case 15: return 1e4;        // decametres
+    case 16: return 1e5;        // hectometres
+    case 17: return 1e12;       // gigametres
+    case 18: return 1.495978707e14;         // astronomical units (IAU 2012)
+    case 19: return 9.4607304725808e18;     // light years (Julian)
+    case 20: return 3.0856775814913673e19;  // parsecs (IAU 2015)
+    default: return 0.0;        // unitless, or no unit code of DXF
+  }
+}
+
+std::string dxf_unit_name(int insunits) {
+  switch (insunits) {
+    case 0: return "no unit";
+    case 1: return "inches";
+    case 2: return "feet";
+    case 3: return "miles";
+    case 4: return "millimetres";
+    case 5: return "centimetres";
+    case 6: return "metres";
+    case 7: return "kilometres";
+    case 8: return "microinches";
+    case 9: return "mils";
+    case 10: return "yards";
+    case 11: return "angstroms";
+    case 12: return "nanometres";
+    case 13: return "microns";
+    case 14: return "decimetres";
+    case 15: return "decametres";
+    case 16: return "hectometres";
+    case 17: return "gigametres";
+    case 18: return "astronomical units";
+    case 19: return "light years";
+    case 20: return "parsecs";
+    default: return fmt::format("unit code {}", insunits);
+  }
+}
+
 Expected<DxfDrawing> read_dxf_drawing(const std::filesystem::path& path) {
   const auto text = read_text_file(path);
   if (!text) return text.error();

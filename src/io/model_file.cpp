@@ -52,35 +52,18 @@ Expected<std::vector<Model>> models_of_drawing(std::string_view text, const std:
   return models;
 }
 
-/// Millimetres per drawing unit of DXF's $INSUNITS (0: unitless).
-double dxf_millimetres(int insunits) {
-  switch (insunits) {
-    case 1: return 25.4;        // inches
-    case 2: return 304.8;       // feet
-    case 3: return 1609344.0;   // miles
-    case 4: return 1.0;         // millimetres
-    case 5: return 10.0;        // centimetres
-    case 6: return 1000.0;      // metres
-    case 7: return 1e6;         // kilometres
-    case 8: return 25.4e-6;     // microinches
-    case 9: return 0.0254;      // mils
-    case 10: return 914.4;      // yards
-    case 13: return 1e-3;       // microns
-    case 14: return 100.0;      // decimetres
-    default: return 0.0;        // unitless, or a unit this reader does not convert
-  }
-}
-
 /// One curve model per curve entity; problems are errors; millimetres
 /// through $INSUNITS.
-Expected<std::vector<Model>> models_of_dxf(std::string_view text, const std::string& source, DrawingUnits units) {
+Expected<std::vector<Model>> models_of_dxf(std::string_view text, const std::string& source, DrawingUnits units,
+                                           int& insunits) {
   auto drawing = parse_dxf_drawing(text, source);
   if (!drawing) return drawing.error();
+  insunits = units == DrawingUnits::millimetres ? 4 : drawing->insunits;
   if (auto refused = refusal(drawing->problems, drawing->curves.empty(), drawing->skipped, source, "curve entity"))
     return *refused;
   double scale = 1.0;
   if (units == DrawingUnits::millimetres) {
-    scale = dxf_millimetres(drawing->insunits);
+    scale = dxf_unit_millimetres(drawing->insunits);
     if (scale == 0.0)
       return Error{fmt::format("{}: millimetres need the drawing's units, and its $INSUNITS is {} ({})", source,
                                drawing->insunits, drawing->insunits == 0 ? "unitless" : "not a length unit"),
@@ -116,6 +99,12 @@ Expected<std::vector<Model>> models_of_dxf(std::string_view text, const std::str
 }  // namespace
 
 Expected<std::vector<Model>> read_models(const std::filesystem::path& path, DrawingUnits units) {
+  auto read = read_models_with_unit(path, units);
+  if (!read) return read.error();
+  return std::move(read->models);
+}
+
+Expected<UnitModels> read_models_with_unit(const std::filesystem::path& path, DrawingUnits units) {
   const auto text = read_text_file(path);
   if (!text) return text.error();
   const std::string source = display_name(path);
@@ -138,19 +127,32 @@ Expected<std::vector<Model>> read_models(const std::filesystem::path& path, Draw
                                              content.find("SECTION") < first + 16)))
       format = Format::dxf;
   }
-  if (format == Format::svg) return models_of_drawing(*text, source, units);
-  if (format == Format::dxf) return models_of_dxf(*text, source, units);
+  if (format == Format::svg) {
+    auto models = models_of_drawing(*text, source, units);
+    if (!models) return models.error();
+    return UnitModels{std::move(*models), units == DrawingUnits::millimetres ? 4 : 0};
+  }
+  if (format == Format::dxf) {
+    int insunits = 0;
+    auto models = models_of_dxf(*text, source, units, insunits);
+    if (!models) return models.error();
+    return UnitModels{std::move(*models), insunits};
+  }
   if (units != DrawingUnits::user)
     return Error{fmt::format("{}: millimetres are asked of {}, whose numbers have no unit (--units applies to "
                              "drawings: SVG, DXF)",
                              source, format == Format::json ? "model JSON" : "a CSV point set"),
                  ErrorKind::invalid_argument};
-  if (format == Format::json) return parse_models_json(*text, source);
+  if (format == Format::json) {
+    auto models = parse_models_json(*text, source);
+    if (!models) return models.error();
+    return UnitModels{std::move(*models), 0};
+  }
   auto points = parse_points_csv(*text, source);
   if (!points) return points.error();
   auto curve = BezierCurve::make(std::move(*points));
   if (!curve) return with_context(curve.error(), source);
-  return std::vector<Model>{Model{std::move(*curve)}};
+  return UnitModels{std::vector<Model>{Model{std::move(*curve)}}, 0};
 }
 
 }  // namespace casteljau

@@ -31,6 +31,26 @@ check "the NURBS semicircle reads back exactly" "$("$casteljau" convert "$exampl
 "$casteljau" convert "$work/part.dxf" --to dxf --units mm -o "$work/mm.dxf"
 grep -q $'INSUNITS\r\?\n *70\r\?\n4$' "$work/mm.dxf" ||
   { echo "FAIL: a drawing read in mm is written with \$INSUNITS 4"; failures=$((failures + 1)); }
+# The unit passes through (issue 39: --to step wrote inches under millimetres,
+# --to dxf reset $INSUNITS to 0): the inch drawing keeps $INSUNITS 1 in DXF and
+# is labelled inches in STEP and IGES; a drawing in metres is converted to
+# millimetres (CAD files hold mm or inches); model JSON states no unit.
+"$casteljau" convert "$work/part.dxf" --to dxf -o "$work/inches.dxf"
+grep -q $'INSUNITS\r\?\n *70\r\?\n1$' "$work/inches.dxf" ||
+  { echo "FAIL: a drawing in inches is written with \$INSUNITS 1"; failures=$((failures + 1)); }
+check "--to step in inches" "convert: 2 curves and 0 surfaces to STEP AP214, exact (every knot, control point and weight as it is), in inches" \
+  convert "$work/part.dxf" --to step -o "$work/part.stp"
+grep -q "CONVERSION_BASED_UNIT('INCH'" "$work/part.stp" || { echo "FAIL: the STEP file is not in inches"; failures=$((failures + 1)); }
+check "--to iges in inches" "convert: 2 curves and 0 surfaces to IGES 5.3 (entities 126 and 128), exact (every knot, control point and weight as it is), in inches" \
+  convert "$work/part.dxf" --to iges -o "$work/part.igs"
+model metres.dxf $'0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n6\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n0\n20\n0\n11\n3\n21\n4\n0\nENDSEC\n0\nEOF\n'
+check "--to step from metres" "convert: 1 curve and 0 surfaces to STEP AP214, exact (knots and weights as they are, control points x 1000), converted from metres to millimetres" \
+  convert "$work/metres.dxf" --to step -o "$work/metres.stp"
+grep -q "CARTESIAN_POINT('',(3000.,4000.,0.))" "$work/metres.stp" ||
+  { echo "FAIL: the metres are not millimetres in STEP"; failures=$((failures + 1)); }
+"$casteljau" convert "$work/metres.dxf" --to dxf -o "$work/metres-back.dxf"
+grep -q $'INSUNITS\r\?\n *70\r\?\n6$' "$work/metres-back.dxf" ||
+  { echo "FAIL: a drawing in metres is written with \$INSUNITS 6"; failures=$((failures + 1)); }
 model space.json '{"type": "bezier", "control_points": [[0,0,0],[1,1,1],[2,0,1]]}'
 "$casteljau" convert "$work/space.json" --to dxf -o "$work/space.dxf"
 check "a space curve reads back" "$("$casteljau" eval "$work/space.json" --samples 5)" eval "$work/space.dxf" --samples 5

@@ -19,8 +19,10 @@
 
 #include "casteljau/bspline/evaluate.hpp"
 #include "casteljau/curves/curve_view.hpp"
+#include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
 #include "casteljau/nurbs/conics.hpp"
+#include "io_test_support.hpp"
 
 namespace casteljau {
 namespace {
@@ -150,6 +152,30 @@ TEST(DxfRead, HeaderUnitsAndSkippedEntities) {
   EXPECT_EQ(drawing.insunits, 4);
   ASSERT_EQ(drawing.skipped.size(), 1u);
   EXPECT_EQ(drawing.skipped[0], "line 19: TEXT");
+}
+
+TEST(DxfRead, TheUnitAFileStatesIsKeptWithItsModels) {
+  // read_models_with_unit (io/model_file.hpp): a DXF's own $INSUNITS, 4 when
+  // read in millimetres (then scaled), 0 for files that state no unit.
+  const test::TemporaryFolder folder;
+  const std::string line = "0\nLINE\n10\n0\n20\n0\n11\n3\n21\n4\n";
+  test::write_text(folder / "inches.dxf", dxf(line, "9\n$INSUNITS\n70\n1\n"));
+  test::write_text(folder / "plain.dxf", dxf(line));
+  test::write_text(folder / "page.svg", "<svg xmlns='http://www.w3.org/2000/svg' width='10mm' height='10mm'><path d='M0 0H1'/></svg>");
+  test::write_text(folder / "model.json", "{\"type\": \"bezier\", \"control_points\": [[0, 0], [1, 1]]}");
+  EXPECT_EQ(read_models_with_unit(folder / "inches.dxf").value().insunits, 1);
+  const UnitModels millimetres = read_models_with_unit(folder / "inches.dxf", DrawingUnits::millimetres).value();
+  EXPECT_EQ(millimetres.insunits, 4);
+  EXPECT_EQ(std::get<BezierCurve>(millimetres.models.at(0)).control_points()[1][1], 4 * 25.4);
+  EXPECT_EQ(read_models_with_unit(folder / "plain.dxf").value().insunits, 0);
+  EXPECT_EQ(read_models_with_unit(folder / "page.svg").value().insunits, 0);
+  EXPECT_EQ(read_models_with_unit(folder / "page.svg", DrawingUnits::millimetres).value().insunits, 4);
+  EXPECT_EQ(read_models_with_unit(folder / "model.json").value().insunits, 0);
+  EXPECT_EQ(dxf_unit_millimetres(2), 304.8);
+  EXPECT_EQ(dxf_unit_name(6), "metres");
+  EXPECT_EQ(dxf_unit_millimetres(15), 1e4);
+  EXPECT_EQ(dxf_unit_millimetres(21), 0.0);  // no unit code of DXF
+  EXPECT_EQ(dxf_unit_name(21), "unit code 21");
 }
 
 TEST(DxfRead, FileErrorsNameTheirLine) {

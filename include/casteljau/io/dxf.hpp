@@ -58,6 +58,17 @@ struct DxfDrawing {
 /// or axis).
 Expected<DxfDrawing> parse_dxf_drawing(std::string_view text, const std::string& source);
 
+/// Millimetres per drawing unit of DXF's $INSUNITS code (AutoCAD's DXF
+/// reference, HEADER section: 1 in, 2 ft, 3 mi, 4 mm, 5 cm, 6 m, 7 km,
+/// 8 microinches, 9 mils, 10 yd, 11 angstroms, 12 nm, 13 microns, 14 dm,
+/// 15 dam, 16 hm, 17 Gm, 18 au, 19 light years, 20 parsecs); 0 for 0
+/// (unitless) and codes DXF does not define.
+double dxf_unit_millimetres(int insunits);
+
+/// The name of a $INSUNITS unit in the plural ("inches", "millimetres"), or
+/// "unit code N" for the others.
+std::string dxf_unit_name(int insunits);
+
 /// Reads and parses a DXF file (errors name the file as given).
 Expected<DxfDrawing> read_dxf_drawing(const std::filesystem::path& path);
 
