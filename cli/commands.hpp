@@ -25,5 +25,6 @@ void add_closest_command(CLI::App& app, int& status);      // cli/closest_comman
 void add_intersect_command(CLI::App& app, int& status);    // cli/intersect_command.cpp
 void add_text_command(CLI::App& app, int& status);         // cli/text_command.cpp
 void add_gcode_command(CLI::App& app, int& status);        // cli/gcode_command.cpp
+void add_info_command(CLI::App& app, int& status);         // cli/info_command.cpp
 
 }  // namespace casteljau::cli

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   add_intersect_command(app, status);
   add_text_command(app, status);
   add_gcode_command(app, status);
+  add_info_command(app, status);
   set_up_help(app);
 
   if (const auto unknown = unknown_subcommand(app, argc, argv)) return fail(*unknown);

@@ -139,10 +139,10 @@ Expected<std::vector<Model>> read_model_file(const std::string& path, const std:
   return read_models(path, *drawing_units);
 }
 
-Expected<UnitModels> read_model_file_with_unit(const std::string& path, const std::string& units) {
+Expected<FileModels> read_model_file_with_unit(const std::string& path, const std::string& units) {
   auto drawing_units = drawing_units_option(units);
   if (!drawing_units) return drawing_units.error();
-  return read_models_with_unit(path, *drawing_units);
+  return read_file_models(path, *drawing_units);
 }
 
 Error in_file(const std::string& path, const Error& error) {

@@ -65,7 +65,7 @@ Expected<DrawingUnits> drawing_units_option(const std::string& units);
 /// "--units: 'cm' is not user or mm".
 Expected<std::vector<Model>> read_model_file(const std::string& path, const std::string& units);
 /// read_model_file with the unit the file states (io/model_file.hpp).
-Expected<UnitModels> read_model_file_with_unit(const std::string& path, const std::string& units);
+Expected<FileModels> read_model_file_with_unit(const std::string& path, const std::string& units);
 
 /// The help of a MODEL argument that takes any model file.
 inline constexpr const char* kModelFileHelp =

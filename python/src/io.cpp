@@ -23,6 +23,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "casteljau/io/csv.hpp"
+#include "casteljau/io/dxf.hpp"
 #include "casteljau/io/file.hpp"
 #include "casteljau/io/gcode.hpp"
 #include "casteljau/io/model.hpp"
@@ -183,6 +184,36 @@ void bind_io(py::module_& module) {
       "control polygon of one BezierCurve), an SVG drawing (one PiecewiseBezierCurve per subpath, in the root's "
       "user units) or a DXF drawing (one model per entity): by the extension .json / .csv / .svg / .dxf, else by "
       "content. ValueError names the file, and for a drawing the first problem's line and element.");
+
+  module.def(
+      "read_file_models",
+      [](const fs::path& path, const std::string& units) {
+        if (units != "user" && units != "mm") throw py::value_error(fmt::format("units '{}' is not user or mm", units));
+        FileModels file = unwrap(without_gil([&] {
+          return read_file_models(path, units == "mm" ? DrawingUnits::millimetres : DrawingUnits::user);
+        }));
+        py::list origins;
+        for (const ModelOrigin& o : file.origins)
+          origins.append(py::dict(py::arg("element") = o.element, py::arg("id") = o.id, py::arg("layer") = o.layer,
+                                  py::arg("line") = o.line));
+        py::dict result;
+        result["format"] = file.format;
+        result["models"] = models_to_python(std::move(file.models));
+        result["origins"] = origins;
+        result["insunits"] = file.insunits;
+        result["unit"] = file.insunits == 0 ? std::string() : dxf_unit_name(file.insunits);
+        result["millimetres_per_unit"] = file.insunits == 0 ? py::object(py::none())
+                                                            : py::object(py::float_(dxf_unit_millimetres(file.insunits)));
+        result["page_bottom"] = file.page_bottom ? py::object(py::float_(*file.page_bottom)) : py::object(py::none());
+        result["skipped"] = file.skipped;
+        return result;
+      },
+      py::arg("path"), py::arg("units") = "user",
+      "read_models with what the file states besides its models (casteljau info; io/model_file.hpp): a dict of "
+      "format ('model JSON', 'CSV point set', 'SVG drawing', 'DXF drawing'), models, origins (one dict per model: "
+      "element, id, layer, line), insunits (DXF's $INSUNITS code of the unit, 0: none stated), unit (its name, '' "
+      "when none), millimetres_per_unit (None when none), page_bottom (an SVG's page bottom in its user units, "
+      "else None) and skipped (what a drawing draws that was left out). units 'user' or 'mm'.");
 
   module.def(
       "to_json", [](const py::object& model) { return to_json(model_from(model, "model")); }, py::arg("model"),

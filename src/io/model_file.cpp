@@ -41,24 +41,33 @@ std::optional<Error> refusal(const std::vector<Error>& problems, bool no_curves,
 }
 
 /// One piecewise_bezier model per subpath of the drawing; its problems are errors.
-Expected<std::vector<Model>> models_of_drawing(std::string_view text, const std::string& source, DrawingUnits units) {
+Expected<FileModels> models_of_drawing(std::string_view text, const std::string& source, DrawingUnits units) {
   auto drawing = parse_svg_drawing(text, source, units);
   if (!drawing) return drawing.error();
   if (auto refused = refusal(drawing->problems, drawing->curves.empty(), drawing->skipped, source, "path or shape"))
     return *refused;
-  std::vector<Model> models;
-  models.reserve(drawing->curves.size());
-  for (SvgCurve& curve : drawing->curves) models.emplace_back(std::move(curve.curve));
-  return models;
+  FileModels file;
+  file.format = "SVG drawing";
+  file.insunits = units == DrawingUnits::millimetres ? 4 : 0;
+  file.page_bottom = drawing->page_bottom;
+  file.skipped = std::move(drawing->skipped);
+  file.models.reserve(drawing->curves.size());
+  for (SvgCurve& curve : drawing->curves) {
+    file.models.emplace_back(std::move(curve.curve));
+    file.origins.push_back({curve.element, curve.id, "", curve.line});
+  }
+  return file;
 }
 
 /// One curve model per curve entity; problems are errors; millimetres
 /// through $INSUNITS.
-Expected<std::vector<Model>> models_of_dxf(std::string_view text, const std::string& source, DrawingUnits units,
-                                           int& insunits) {
+Expected<FileModels> models_of_dxf(std::string_view text, const std::string& source, DrawingUnits units) {
   auto drawing = parse_dxf_drawing(text, source);
   if (!drawing) return drawing.error();
-  insunits = units == DrawingUnits::millimetres ? 4 : drawing->insunits;
+  FileModels file;
+  file.format = "DXF drawing";
+  file.insunits = units == DrawingUnits::millimetres ? 4 : drawing->insunits;
+  file.skipped = drawing->skipped;
   if (auto refused = refusal(drawing->problems, drawing->curves.empty(), drawing->skipped, source, "curve entity"))
     return *refused;
   double scale = 1.0;
@@ -69,9 +78,10 @@ Expected<std::vector<Model>> models_of_dxf(std::string_view text, const std::str
                                drawing->insunits, drawing->insunits == 0 ? "unitless" : "not a length unit"),
                    ErrorKind::invalid_argument};
   }
-  std::vector<Model> models;
+  std::vector<Model>& models = file.models;
   models.reserve(drawing->curves.size());
   for (DxfCurve& curve : drawing->curves) {
+    file.origins.push_back({curve.entity, curve.handle, curve.layer, curve.line});
     if (scale == 1.0) {
       models.push_back(std::move(curve.curve));
       continue;
@@ -93,18 +103,18 @@ Expected<std::vector<Model>> models_of_dxf(std::string_view text, const std::str
     if (!scaled) return with_context(scaled.error(), source);
     models.push_back(std::move(*scaled));
   }
-  return models;
+  return file;
 }
 
 }  // namespace
 
 Expected<std::vector<Model>> read_models(const std::filesystem::path& path, DrawingUnits units) {
-  auto read = read_models_with_unit(path, units);
+  auto read = read_file_models(path, units);
   if (!read) return read.error();
   return std::move(read->models);
 }
 
-Expected<UnitModels> read_models_with_unit(const std::filesystem::path& path, DrawingUnits units) {
+Expected<FileModels> read_file_models(const std::filesystem::path& path, DrawingUnits units) {
   const auto text = read_text_file(path);
   if (!text) return text.error();
   const std::string source = display_name(path);
@@ -127,32 +137,29 @@ Expected<UnitModels> read_models_with_unit(const std::filesystem::path& path, Dr
                                              content.find("SECTION") < first + 16)))
       format = Format::dxf;
   }
-  if (format == Format::svg) {
-    auto models = models_of_drawing(*text, source, units);
-    if (!models) return models.error();
-    return UnitModels{std::move(*models), units == DrawingUnits::millimetres ? 4 : 0};
-  }
-  if (format == Format::dxf) {
-    int insunits = 0;
-    auto models = models_of_dxf(*text, source, units, insunits);
-    if (!models) return models.error();
-    return UnitModels{std::move(*models), insunits};
-  }
+  if (format == Format::svg) return models_of_drawing(*text, source, units);
+  if (format == Format::dxf) return models_of_dxf(*text, source, units);
   if (units != DrawingUnits::user)
     return Error{fmt::format("{}: millimetres are asked of {}, whose numbers have no unit (--units applies to "
                              "drawings: SVG, DXF)",
                              source, format == Format::json ? "model JSON" : "a CSV point set"),
                  ErrorKind::invalid_argument};
+  FileModels file;
   if (format == Format::json) {
     auto models = parse_models_json(*text, source);
     if (!models) return models.error();
-    return UnitModels{std::move(*models), 0};
+    file.format = "model JSON";
+    file.models = std::move(*models);
+  } else {
+    auto points = parse_points_csv(*text, source);
+    if (!points) return points.error();
+    auto curve = BezierCurve::make(std::move(*points));
+    if (!curve) return with_context(curve.error(), source);
+    file.format = "CSV point set";
+    file.models.emplace_back(std::move(*curve));
   }
-  auto points = parse_points_csv(*text, source);
-  if (!points) return points.error();
-  auto curve = BezierCurve::make(std::move(*points));
-  if (!curve) return with_context(curve.error(), source);
-  return UnitModels{std::vector<Model>{Model{std::move(*curve)}}, 0};
+  for (const Model& model : file.models) file.origins.push_back({type_name(model), "", "", 0});
+  return file;
 }
 
 }  // namespace casteljau

@@ -155,7 +155,7 @@ TEST(DxfRead, HeaderUnitsAndSkippedEntities) {
 }
 
 TEST(DxfRead, TheUnitAFileStatesIsKeptWithItsModels) {
-  // read_models_with_unit (io/model_file.hpp): a DXF's own $INSUNITS, 4 when
+  // read_file_models (io/model_file.hpp): a DXF's own $INSUNITS, 4 when
   // read in millimetres (then scaled), 0 for files that state no unit.
   const test::TemporaryFolder folder;
   const std::string line = "0\nLINE\n10\n0\n20\n0\n11\n3\n21\n4\n";
@@ -163,14 +163,14 @@ TEST(DxfRead, TheUnitAFileStatesIsKeptWithItsModels) {
   test::write_text(folder / "plain.dxf", dxf(line));
   test::write_text(folder / "page.svg", "<svg xmlns='http://www.w3.org/2000/svg' width='10mm' height='10mm'><path d='M0 0H1'/></svg>");
   test::write_text(folder / "model.json", "{\"type\": \"bezier\", \"control_points\": [[0, 0], [1, 1]]}");
-  EXPECT_EQ(read_models_with_unit(folder / "inches.dxf").value().insunits, 1);
-  const UnitModels millimetres = read_models_with_unit(folder / "inches.dxf", DrawingUnits::millimetres).value();
+  EXPECT_EQ(read_file_models(folder / "inches.dxf").value().insunits, 1);
+  const FileModels millimetres = read_file_models(folder / "inches.dxf", DrawingUnits::millimetres).value();
   EXPECT_EQ(millimetres.insunits, 4);
   EXPECT_EQ(std::get<BezierCurve>(millimetres.models.at(0)).control_points()[1][1], 4 * 25.4);
-  EXPECT_EQ(read_models_with_unit(folder / "plain.dxf").value().insunits, 0);
-  EXPECT_EQ(read_models_with_unit(folder / "page.svg").value().insunits, 0);
-  EXPECT_EQ(read_models_with_unit(folder / "page.svg", DrawingUnits::millimetres).value().insunits, 4);
-  EXPECT_EQ(read_models_with_unit(folder / "model.json").value().insunits, 0);
+  EXPECT_EQ(read_file_models(folder / "plain.dxf").value().insunits, 0);
+  EXPECT_EQ(read_file_models(folder / "page.svg").value().insunits, 0);
+  EXPECT_EQ(read_file_models(folder / "page.svg", DrawingUnits::millimetres).value().insunits, 4);
+  EXPECT_EQ(read_file_models(folder / "model.json").value().insunits, 0);
   EXPECT_EQ(dxf_unit_millimetres(2), 304.8);
   EXPECT_EQ(dxf_unit_name(6), "metres");
   EXPECT_EQ(dxf_unit_millimetres(15), 1e4);

@@ -288,6 +288,22 @@ def test_read_models_reads_svg_drawings(tmp_path):
     assert len(models) == 3 and all(type(m) is c.PiecewiseBezierCurve for m in models)
     np.testing.assert_array_equal(c.points_at(models[0], np.array([0.0, 1.0, 2.0, 3.0, 4.0])),
                                   [[1, -2], [5, -2], [5, -6], [1, -6], [1, -2]])
+    # read_file_models: the same models with where they came from (casteljau info).
+    file = c.read_file_models(drawing)
+    assert file["format"] == "SVG drawing" and file["page_bottom"] == 0.0 and file["skipped"] == []
+    assert [o["element"] for o in file["origins"]] == ["path", "path", "circle"]
+    assert file["insunits"] == 0 and file["unit"] == "" and file["millimetres_per_unit"] is None
+    assert [c.to_json(m) for m in file["models"]] == [c.to_json(m) for m in models]
+    dxf = tmp_path / "d.dxf"
+    dxf.write_text("0\nSECTION\n2\nHEADER\n9\n$INSUNITS\n70\n1\n0\nENDSEC\n0\nSECTION\n2\nENTITIES\n"
+                   "0\nLINE\n5\n2A\n8\nwalls\n10\n0\n20\n0\n11\n3\n21\n4\n0\nTEXT\n8\n0\n1\nhi\n0\nENDSEC\n0\nEOF\n")
+    file = c.read_file_models(dxf)
+    assert file["unit"] == "inches" and file["millimetres_per_unit"] == 25.4 and file["insunits"] == 1
+    assert file["origins"] == [{"element": "LINE", "id": "2A", "layer": "walls", "line": 15}]
+    assert file["skipped"] == ["line 29: TEXT"]
+    assert c.read_file_models(dxf, "mm")["insunits"] == 4
+    with pytest.raises(ValueError, match="units 'cm' is not user or mm"):
+        c.read_file_models(dxf, "cm")
     broken = tmp_path / "broken.svg"
     broken.write_text('<svg>\n<path id="p" d="M0 0 L1 x"/></svg>')
     with pytest.raises(ValueError, match=r"broken.svg, line 2, <path id='p'>: path data, character 9 \('x'\)"):

@@ -2,7 +2,10 @@
 // The models of a file in any format casteljau reads: model JSON, a CSV point
 // set, an SVG or a DXF drawing. What every command that takes a MODEL calls.
 
+#include <cstddef>
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "casteljau/core/expected.hpp"
@@ -28,19 +31,37 @@ namespace casteljau {
 Expected<std::vector<Model>> read_models(const std::filesystem::path& path,
                                          DrawingUnits units = DrawingUnits::user);
 
-/// The models of a file and the length unit of their numbers.
-struct UnitModels {
-  std::vector<Model> models;
-  /// The unit as DXF's $INSUNITS code (io/dxf.hpp: dxf_unit_millimetres,
-  /// dxf_unit_name): 4 for a drawing read in millimetres, a DXF drawing's own
-  /// $INSUNITS when read in its units; 0 when the file states none (model
-  /// JSON, CSV, an SVG read in its user units, a unitless DXF).
-  int insunits = 0;
+/// Where a model came from in its file.
+struct ModelOrigin {
+  /// The SVG element ("path", "rect"...), the DXF entity ("LINE", "SPLINE"...),
+  /// or the model's type for model JSON and CSV ("bezier", "bspline_surface"...).
+  std::string element;
+  std::string id;        ///< the SVG element's id, the DXF entity's handle; "" when none
+  std::string layer;     ///< the DXF entity's layer; "" for the other formats
+  std::size_t line = 0;  ///< the line where the element starts (drawings); 0 for model JSON and CSV
 };
 
-/// read_models, with the unit the file states (issue 39: conversions lost it,
-/// a DXF in inches became a STEP in millimetres of the same numbers).
-Expected<UnitModels> read_models_with_unit(const std::filesystem::path& path,
-                                           DrawingUnits units = DrawingUnits::user);
+/// The models of a file with what the file states besides them.
+struct FileModels {
+  std::vector<Model> models;
+  std::vector<ModelOrigin> origins;  ///< one per model: a drawing's subpaths share their element's
+  std::string format;                ///< "model JSON", "CSV point set", "SVG drawing", "DXF drawing"
+  /// The unit of the numbers as DXF's $INSUNITS code (io/dxf.hpp:
+  /// dxf_unit_millimetres, dxf_unit_name): 4 for a drawing read in
+  /// millimetres, a DXF drawing's own $INSUNITS when read in its units; 0
+  /// when the file states none (model JSON, CSV, an SVG in its user units, a
+  /// unitless DXF).
+  int insunits = 0;
+  /// An SVG drawing's page bottom in its user units (SvgDrawing::page_bottom).
+  std::optional<double> page_bottom;
+  /// What a drawing draws that is left out (SvgDrawing::skipped, DxfDrawing::skipped).
+  std::vector<std::string> skipped;
+};
+
+/// read_models, with where each model came from, the unit the file states
+/// (issue 39: conversions lost it, a DXF in inches became a STEP in
+/// millimetres of the same numbers) and what a drawing draws that was left
+/// out. What `casteljau info` reports.
+Expected<FileModels> read_file_models(const std::filesystem::path& path, DrawingUnits units = DrawingUnits::user);
 
 }  // namespace casteljau
