@@ -96,7 +96,13 @@ int convert_to_svg(const ConvertOptions& options) {
     if (!units) return fail(units.error());
     auto drawing = read_svg_drawing(options.model, *units);
     if (!drawing) return fail(drawing.error());
-    if (!drawing->problems.empty()) return fail(drawing->problems.front());
+    // A drawing with problems or nothing to read is refused as every other
+    // command refuses it (issue 39: an empty 1e-300-sized drawing was written).
+    if (!drawing->problems.empty() || drawing->curves.empty()) {
+      auto refused = read_model_file(options.model, options.units);
+      return fail(refused ? Error{"the drawing has nothing to read"} : refused.error());
+    }
+    if (Status ok = skipped_elements(options.model, drawing->skipped); !ok) return fail(ok.error());
     curves = std::move(drawing->curves);
   } else {
     const auto models = read_model_file(options.model, options.units);

@@ -156,6 +156,7 @@ void add_gcode_command(CLI::App& app, int& status) {
   options->plunge_feed_option =
       gcode->add_option("--plunge-feed", options->plunge_feed, "Feed of the moves down (default 200 mm, 8 in)")
           ->type_name("F");
+  add_reading_options(gcode);
   gcode->add_option("--units", options->units, "Units of the program and of the coordinates: mm (G21, the "
                                                "default) or in (G20)")
       ->type_name("mm|in");

@@ -69,16 +69,6 @@ std::string listed(const std::vector<std::string>& names, std::size_t shown = 12
   return out;
 }
 
-/// The kind of a skipped entry as the drawing readers write them: "line 7:
-/// <text> (why)" (SVG: "text") or "line 300: TEXT" (DXF: "TEXT").
-std::string skipped_kind(const std::string& entry) {
-  const auto colon = entry.find(": ");
-  std::string kind = colon == std::string::npos ? entry : entry.substr(colon + 2);
-  if (const auto paren = kind.find(" ("); paren != std::string::npos) kind.erase(paren);
-  if (kind.size() > 2 && kind.front() == '<' && kind.back() == '>') kind = kind.substr(1, kind.size() - 2);
-  return kind;
-}
-
 std::string unit_line(const FileModels& file) {
   if (file.insunits == 4) return "millimetres";
   if (file.insunits != 0) {
@@ -92,7 +82,7 @@ std::string unit_line(const FileModels& file) {
 }
 
 int run_info(const InfoOptions& options) {
-  const auto read = read_model_file_with_unit(options.model, options.units);
+  const auto read = read_model_file_with_unit(options.model, options.units, /*report_skipped=*/false);
   if (!read) return fail(read.error());
   const FileModels& file = *read;
   std::string out = fmt::format("{}: {}", display_name(options.model), file.format);
@@ -175,9 +165,7 @@ int run_info(const InfoOptions& options) {
   if (file.skipped.empty()) {
     out += "skipped: nothing\n";
   } else {
-    Tally kinds;
-    for (const std::string& entry : file.skipped) kinds.add(skipped_kind(entry));
-    out += fmt::format("skipped: {} ({})\n", kinds.total(), kinds.text());
+    out += fmt::format("skipped: {} ({})\n", file.skipped.size(), skipped_summary(file.skipped));
     for (std::size_t i = 0; i < file.skipped.size() && i < 10; ++i) out += fmt::format("  {}\n", file.skipped[i]);
     if (file.skipped.size() > 10) out += fmt::format("  and {} more\n", file.skipped.size() - 10);
   }

@@ -4,10 +4,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <utility>
 
 #include "casteljau/io/csv.hpp"
@@ -120,6 +122,7 @@ CLI::Option* add_function_flag(CLI::App* command, bool& function) {
 }
 
 CLI::Option* add_units_option(CLI::App* command, std::string& units) {
+  add_reading_options(command);
   return command
       ->add_option("--units", units,
                    "The units a drawing is read in: user (an SVG's root user units, a DXF's drawing units; the "
@@ -133,16 +136,113 @@ Expected<DrawingUnits> drawing_units_option(const std::string& units) {
   return Error{fmt::format("--units: '{}' is not user or mm", units.substr(0, 40)), ErrorKind::invalid_argument};
 }
 
-Expected<std::vector<Model>> read_model_file(const std::string& path, const std::string& units) {
-  auto drawing_units = drawing_units_option(units);
-  if (!drawing_units) return drawing_units.error();
-  return read_models(path, *drawing_units);
+namespace {
+// The reading options of the subcommand that runs.
+bool strict_drawings = false;
+std::string selected_model, selected_id, selected_layer;
+// Each subcommand has its own options bound to these values: given when one of them was.
+std::vector<const CLI::Option*> selected_model_options, selected_id_options, selected_layer_options;
+
+bool any_given(const std::vector<const CLI::Option*>& options) {
+  return std::any_of(options.begin(), options.end(), [](const CLI::Option* option) { return given(option); });
 }
 
-Expected<FileModels> read_model_file_with_unit(const std::string& path, const std::string& units) {
+/// The models of `file` that --model, --id and --layer select (all of them
+/// when none is given); an error names what matched nothing.
+Status select_models(const std::string& path, FileModels& file) {
+  const bool by_index = any_given(selected_model_options);
+  const bool by_id = any_given(selected_id_options);
+  const bool by_layer = any_given(selected_layer_options);
+  if (!by_index && !by_id && !by_layer) return {};
+  std::optional<std::size_t> index;
+  if (by_index) {
+    auto n = whole_number("--model", selected_model, 0, 1LL << 40);
+    if (!n) return n.error();
+    if (*n >= static_cast<long long>(file.models.size()))
+      return Error{fmt::format("--model {}: '{}' holds {} model{} (models[0] to models[{}])", *n, display_name(path),
+                               file.models.size(), file.models.size() == 1 ? "" : "s", file.models.size() - 1),
+                   ErrorKind::invalid_argument};
+    index = static_cast<std::size_t>(*n);
+  }
+  FileModels kept;
+  for (std::size_t m = 0; m < file.models.size(); ++m) {
+    const ModelOrigin& origin = file.origins[m];
+    if ((index && m != *index) || (by_id && origin.id != selected_id) || (by_layer && origin.layer != selected_layer))
+      continue;
+    kept.models.push_back(std::move(file.models[m]));
+    kept.origins.push_back(origin);
+  }
+  if (kept.models.empty()) {
+    // Name what the file holds, so that the next try can succeed.
+    std::vector<std::string> names;
+    for (const ModelOrigin& origin : file.origins) {
+      const std::string& name = by_layer && !by_id ? origin.layer : origin.id;
+      if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    std::string wanted;
+    if (index) wanted += fmt::format("models[{}]", *index);
+    if (by_id) wanted += fmt::format("{}id '{}'", wanted.empty() ? "" : " with ", selected_id.substr(0, 60));
+    if (by_layer) wanted += fmt::format("{}layer '{}'", wanted.empty() ? "" : " on ", selected_layer.substr(0, 60));
+    const char* kind = by_layer && !by_id ? "layers" : file.format == "DXF drawing" ? "handles" : "ids";
+    std::string listed;
+    for (std::size_t i = 0; i < names.size() && i < 10; ++i) listed += (i ? ", " : "") + names[i];
+    if (names.size() > 10) listed += fmt::format(" and {} more", names.size() - 10);
+    return Error{fmt::format("'{}' has no {} ({}: {})", display_name(path), wanted, kind,
+                             names.empty() ? std::string("none") : listed),
+                 ErrorKind::invalid_argument};
+  }
+  file.models = std::move(kept.models);
+  file.origins = std::move(kept.origins);
+  return {};
+}
+}  // namespace
+
+void add_reading_options(CLI::App* command) {
+  command->add_flag("--strict", strict_drawings,
+                    "Refuse a drawing that draws what casteljau leaves out (text, images, clip paths, block "
+                    "references...) instead of noting it on stderr");
+  selected_model_options.push_back(
+      command->add_option("--model", selected_model, "Read only models[N] of the file (from 0, as errors name them)")
+          ->type_name("N"));
+  selected_id_options.push_back(
+      command->add_option("--id", selected_id, "Read only the models of the SVG element with this id, or of the DXF "
+                                               "entity with this handle")
+          ->type_name("ID"));
+  selected_layer_options.push_back(
+      command->add_option("--layer", selected_layer, "Read only the models of the DXF entities on this layer")
+          ->type_name("NAME"));
+}
+
+Status skipped_elements(const std::string& path, const std::vector<std::string>& skipped) {
+  if (skipped.empty()) return {};
+  const std::string count =
+      fmt::format("{} element{} {} not read ({})", skipped.size(), skipped.size() == 1 ? "" : "s",
+                  skipped.size() == 1 ? "is" : "are", skipped_summary(skipped));
+  if (strict_drawings)
+    return Error{fmt::format("{}: {}, and --strict refuses them: {}", display_name(path), count, skipped.front()),
+                 ErrorKind::invalid_argument};
+  erase_progress_line();
+  std::fprintf(stderr, "casteljau: note: %s: %s; casteljau info %s lists them\n", display_name(path).c_str(),
+               count.c_str(), display_name(path).c_str());
+  return {};
+}
+
+Expected<std::vector<Model>> read_model_file(const std::string& path, const std::string& units) {
+  auto file = read_model_file_with_unit(path, units);
+  if (!file) return file.error();
+  return std::move(file->models);
+}
+
+Expected<FileModels> read_model_file_with_unit(const std::string& path, const std::string& units,
+                                               bool report_skipped) {
   auto drawing_units = drawing_units_option(units);
   if (!drawing_units) return drawing_units.error();
-  return read_file_models(path, *drawing_units);
+  auto file = read_file_models(path, *drawing_units);
+  if (!file) return file.error();
+  if (Status ok = select_models(path, *file); !ok) return ok.error();
+  if (report_skipped)
+    if (Status ok = skipped_elements(path, file->skipped); !ok) return ok.error();
+  return file;
 }
 
 Error in_file(const std::string& path, const Error& error) {

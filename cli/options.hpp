@@ -54,7 +54,8 @@ std::string model_name(const std::vector<Model>& models, std::size_t index, cons
 
 /// --units user|mm: the units a drawing is read in: its own (an SVG's root
 /// user units, a DXF's drawing units; the default) or millimetres (through an
-/// SVG root's width, height and viewBox, a DXF's $INSUNITS).
+/// SVG root's width, height and viewBox, a DXF's $INSUNITS); and the options
+/// of add_reading_options, which every command reading drawings takes with it.
 CLI::Option* add_units_option(CLI::App* command, std::string& units);
 
 /// The value of --units ("" is user units): "--units: 'cm' is not user or mm".
@@ -64,8 +65,24 @@ Expected<DrawingUnits> drawing_units_option(const std::string& units);
 /// CSV point set or SVG drawing) in the --units given ("" is user units):
 /// "--units: 'cm' is not user or mm".
 Expected<std::vector<Model>> read_model_file(const std::string& path, const std::string& units);
-/// read_model_file with the unit the file states (io/model_file.hpp).
-Expected<FileModels> read_model_file_with_unit(const std::string& path, const std::string& units);
+/// read_model_file with what the file states besides its models (io/model_file.hpp).
+/// Both report what a drawing left out (report_skipped): one note on stderr,
+/// "casteljau: note: d.svg: 3 elements are not read (2 text, 1 image); casteljau
+/// info d.svg lists them", or with --strict an error (skipped_elements).
+Expected<FileModels> read_model_file_with_unit(const std::string& path, const std::string& units,
+                                               bool report_skipped = true);
+
+/// The note or, under --strict, the error for what a drawing left out
+/// (nothing when `skipped` is empty).
+Status skipped_elements(const std::string& path, const std::vector<std::string>& skipped);
+
+/// The options of every command that reads model files, one set per process
+/// (one subcommand runs): --strict (what a drawing draws and casteljau leaves
+/// out, text, images, block references..., is an error, not a note), and the
+/// selection of models: --model N (models[N], counted from 0 as errors name
+/// them), --id ID (an SVG element's id, a DXF entity's handle), --layer NAME
+/// (a DXF layer); given together, a model must match them all.
+void add_reading_options(CLI::App* command);
 
 /// The help of a MODEL argument that takes any model file.
 inline constexpr const char* kModelFileHelp =

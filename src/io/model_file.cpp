@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -107,6 +108,23 @@ Expected<FileModels> models_of_dxf(std::string_view text, const std::string& sou
 }
 
 }  // namespace
+
+std::string skipped_summary(const std::vector<std::string>& skipped) {
+  // The readers write "line 7: <text> (why)" (SVG) and "line 300: TEXT" (DXF).
+  std::vector<std::pair<std::string, std::size_t>> kinds;
+  for (const std::string& entry : skipped) {
+    const auto colon = entry.find(": ");
+    std::string kind = colon == std::string::npos ? entry : entry.substr(colon + 2);
+    if (const auto paren = kind.find(" ("); paren != std::string::npos) kind.erase(paren);
+    if (kind.size() > 2 && kind.front() == '<' && kind.back() == '>') kind = kind.substr(1, kind.size() - 2);
+    auto found = std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return k.first == kind; });
+    if (found == kinds.end()) kinds.emplace_back(kind, 1);
+    else ++found->second;
+  }
+  std::string out;
+  for (const auto& [kind, count] : kinds) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", count, kind);
+  return out;
+}
 
 Expected<std::vector<Model>> read_models(const std::filesystem::path& path, DrawingUnits units) {
   auto read = read_file_models(path, units);

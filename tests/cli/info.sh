@@ -2,6 +2,7 @@
 # casteljau info: what a file holds, worked by hand for a small SVG drawing
 # (two texts and an image left out), a DXF drawing in metres with handles,
 # layers and entities left out, model JSON curves and a surface; errors exit 2.
+# Also the note other commands print of what a drawing left out, and --strict.
 # Usage: bash info.sh CASTELJAU EXAMPLES_DIR
 source "$(dirname "$0")/support/common.sh" "$@"
 
@@ -71,6 +72,41 @@ OUT
 out=$("$casteljau" info "$examples/sphere.json")
 [[ "$(echo "$out" | tail -2 | head -1)" == "box: x from -1 to 1, y from -1 to 1, z from -1 to 1 (surfaces: their control points' box)" ]] ||
   { echo "FAIL: info of a surface: $out"; failures=$((failures + 1)); }
+# Every other command notes what a drawing left out on stderr (one line, the
+# answer unchanged), and --strict refuses it (issue 39, item 6).
+out=$("$casteljau" length "$work/drawing.svg" 2>"$work/note")
+[[ "$(cat "$work/note")" == "casteljau: note: $work/drawing.svg: 3 elements are not read (2 text, 1 image); casteljau info $work/drawing.svg lists them" &&
+   "$(echo "$out" | wc -l)" == 3 ]] || { echo "FAIL: the note of what was skipped: $(cat "$work/note")"; failures=$((failures + 1)); }
+expect_error "--strict refuses an SVG drawing with text" \
+  "drawing.svg: 3 elements are not read (2 text, 1 image), and --strict refuses them: line 2: <text> (text is not read: convert it to paths)" \
+  length "$work/drawing.svg" --strict
+expect_error "--strict refuses a DXF drawing with TEXT and INSERT" \
+  "drawing.dxf: 2 elements are not read (1 TEXT, 1 INSERT), and --strict refuses them: line 43: TEXT" \
+  eval "$work/drawing.dxf" --at 0 --strict
+expect_error "--strict on convert --to svg" "and --strict refuses them" convert "$work/drawing.svg" --to svg --strict
+expect_error "--strict on gcode" "and --strict refuses them" gcode "$work/drawing.svg" --tolerance 0.1 --strict
+# A drawing with nothing to read is refused by convert --to svg as by the
+# others (it wrote an empty drawing 1e-300 wide).
+model text.svg '<svg xmlns="http://www.w3.org/2000/svg"><text>hi</text></svg>'
+expect_error "convert --to svg of nothing" "text.svg: the drawing has no path or shape to read (line 1: <text> (text is not read: convert it to paths))" \
+  convert "$work/text.svg" --to svg
+
+# Selecting models (issue 39, item 10): --model N (as errors count them),
+# --id (an SVG id, a DXF handle), --layer (DXF); together they must all match.
+out=$("$casteljau" length "$work/drawing.svg" --id c 2>/dev/null)
+[[ "$out" == 62.83185307179586 ]] || { echo "FAIL: --id c: $out"; failures=$((failures + 1)); }
+out=$("$casteljau" length "$work/drawing.svg" --id a --model 1 2>/dev/null)
+[[ "$out" == 14.142135623730953 ]] || { echo "FAIL: --id a --model 1: $out"; failures=$((failures + 1)); }
+out=$("$casteljau" length "$work/drawing.dxf" --layer walls --id 2B 2>/dev/null)
+[[ "$out" == 3 ]] || { echo "FAIL: --layer walls --id 2B: $out"; failures=$((failures + 1)); }
+out=$("$casteljau" closest "$examples/sailboat.svg" --id hull --point 100,10)
+[[ "$(echo "$out" | tail -1 | cut -d, -f1)" == 0 ]] || { echo "FAIL: closest --id hull: $out"; failures=$((failures + 1)); }
+expect_error "--id that matches nothing" "'$work/drawing.svg' has no id 'zz' (ids: a, c)" length "$work/drawing.svg" --id zz
+expect_error "--layer that matches nothing" "'$work/drawing.dxf' has no layer 'roof' (layers: walls)" length "$work/drawing.dxf" --layer roof
+expect_error "--model beyond the models" "--model 9: '$work/drawing.svg' holds 3 models (models[0] to models[2])" \
+  length "$work/drawing.svg" --model 9
+expect_error "--model that is no number" "--model: 'x' is not a whole number" length "$examples/semicircle.json" --model x
+
 expect_error "a missing file" "cannot open" info "$work/none.json"
 expect_error "--units mm on model JSON" "millimetres are asked of model JSON" info "$examples/semicircle.json" --units mm
 finish info

@@ -58,6 +58,11 @@ struct FileModels {
   std::vector<std::string> skipped;
 };
 
+/// What a drawing left out (FileModels::skipped), counted by kind in the order
+/// first met: "2 text, 1 image" (SVG's "<text>", DXF's "TEXT" as the readers
+/// name them).
+std::string skipped_summary(const std::vector<std::string>& skipped);
+
 /// read_models, with where each model came from, the unit the file states
 /// (issue 39: conversions lost it, a DXF in inches became a STEP in
 /// millimetres of the same numbers) and what a drawing draws that was left
