@@ -57,27 +57,22 @@ struct CsvStyle {
   bool as_data() const { return data_points || data_polyline; }
 };
 
-/// A file as a plot source: .json is model JSON; .csv a point set, drawn as
-/// `csv` says; .svg a drawing, one curve per subpath in `units` (drawn as
-/// read: y down in the file is y up in the figure, so the drawing shows
-/// mirrored, as its coordinates are).
+/// A file as a plot source: .csv a point set, drawn as `csv` says; any other
+/// file as every command reads it (read_model_file: model JSON, an SVG or DXF
+/// drawing, by extension or content), a drawing in `units`, upright, its
+/// curves one legend entry.
 Expected<render::PlotSource> read_source(const std::string& path, const CsvStyle& csv, const std::string& units) {
   const std::string extension = lowercase_extension(path);
   render::PlotSource source;
   source.name = std::filesystem::path(path).filename().string();
-  if (extension == ".json") {
-    auto models = read_models_json(path);
-    if (!models) return models.error();
-    source.models = std::move(*models);
+  if (extension != ".csv") {
+    auto file = read_model_file_with_unit(path, units);
+    if (!file) return file.error();
+    source.models = std::move(file->models);
+    source.drawing = file->format == "SVG drawing" || file->format == "DXF drawing";
     return source;
   }
-  if (extension == ".svg") {
-    auto models = read_model_file(path, units);
-    if (!models) return models.error();
-    source.models = std::move(*models);
-    return source;
-  }
-  if (extension == ".csv") {
+  {
     auto points = read_points_csv(path);
     if (!points) return points.error();
     if (csv.as_data()) {
@@ -91,8 +86,6 @@ Expected<render::PlotSource> read_source(const std::string& path, const CsvStyle
     source.models.push_back(std::move(*curve));
     return source;
   }
-  return Error{fmt::format("cannot plot '{}': unknown input format '{}' (use model JSON .json, a CSV point set .csv or an SVG drawing .svg)",
-                           path, extension.empty() ? "no extension" : extension)};
 }
 
 /// Writes the figure, with a progress line while its curves are flattened

@@ -312,8 +312,12 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
                         MarkerShape::diamond});
       continue;
     }
+    // A drawing's curves: one color, the file's name on the first only.
+    const bool together = source.drawing && source.models.size() > 1 && curve_count > 1;
+    const Color drawing_color = together ? cycle_color(color_index++) : colors::black;
     for (std::size_t m = 0; m < source.models.size(); ++m) {
       const std::string name = source.models.size() == 1 ? source.name : fmt::format("{}[{}]", source.name, m);
+      const std::string legend = curve_count == 1 ? "" : !together ? name : m == 0 ? source.name : "";
       const std::size_t first_curve = panel.curves.size();
       if (first_name.empty()) first_name = name;
       if (const BSplineCurve* spline = bspline_in(source.models[m])) {
@@ -329,8 +333,8 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
         spline_options.end_tangents = options.bezier.end_tangents;
         spline_options.curvature_comb = options.bezier.curvature_comb;
         spline_options.construction = options.bezier.construction;
-        const Color color = curve_count == 1 ? colors::black : cycle_color(color_index++);
-        if (auto ok = add_bspline(panel, *spline, spline_options, color, curve_count == 1 ? "" : name); !ok)
+        const Color color = together ? drawing_color : curve_count == 1 ? colors::black : cycle_color(color_index++);
+        if (auto ok = add_bspline(panel, *spline, spline_options, color, legend); !ok)
           return with_context(ok.error(), name);
         name_curves(panel, first_curve, name);
         if (!first_degree) {
@@ -355,8 +359,8 @@ Expected<Figure> plot_figure(const std::vector<PlotSource>& sources, const PlotO
         const int degree = pieces[static_cast<std::size_t>(construction->first)].degree();
         if (auto ok = check_construction_degree(degree, name); !ok) return ok.error();
       }
-      const Color color = curve_count == 1 ? colors::black : cycle_color(color_index++);
-      const std::string label = curve_count == 1 ? "" : name;
+      const Color color = together ? drawing_color : curve_count == 1 ? colors::black : cycle_color(color_index++);
+      const std::string& label = legend;
       for (std::size_t i = 0; i < pieces.size(); ++i) {
         auto plane = plane_curve(pieces[i]);
         if (!plane) return with_context(plane.error(), name);

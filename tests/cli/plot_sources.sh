@@ -27,6 +27,18 @@ svg_texts "$work/p.svg" | grep -qxF "head.csv (polyline)" ||
   { echo "FAIL: legend entry 'head.csv (polyline)' missing"; failures=$((failures + 1)); }
 check "--points-only beside model JSON" "" plot "$work/head.json" "$examples/head.csv" --points-only -o "$work/q.svg"
 
+# --- drawings (issue 39): one legend entry and one color per file, DXF and files
+# without an extension read as every command reads them -----------------------------
+check "a drawing beside a curve" "" plot "$examples/sailboat.svg" "$examples/semicircle.json" -o "$work/boat.svg"
+svg_texts "$work/boat.svg" >"$work/texts"
+[[ "$(grep -cxF "sailboat.svg" "$work/texts")" == 1 && "$(grep -c 'sailboat.svg\[' "$work/texts")" == 0 ]] ||
+  { echo "FAIL: the drawing's legend: $(tr '\n' '|' <"$work/texts")"; failures=$((failures + 1)); }
+grep -qxF "semicircle.json" "$work/texts" || { echo "FAIL: the curve's legend entry"; failures=$((failures + 1)); }
+"$casteljau" convert "$examples/sailboat.svg" --to dxf -o "$work/boat.dxf"
+check "a DXF drawing" "" plot "$work/boat.dxf" -o "$work/dxf.svg"
+cp "$work/boat.dxf" "$work/boat"
+check "a drawing without an extension" "" plot "$work/boat" -o "$work/noext.svg"
+
 # --- the Runge exercise: the y axis holds the curve's dips to -59.78 ------------------
 /usr/bin/env awk 'BEGIN { print "x,y"; for (i = 0; i <= 20; i++) { x = -1 + i / 10; printf "%.17g,%.17g\n", x, 1 / (1 + 25 * x * x) } }' \
   >"$work/runge.csv"

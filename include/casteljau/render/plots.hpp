@@ -77,6 +77,9 @@ struct PlotSource {
   PointArray points{};
   bool markers = true;    ///< a point set: its points as filled diamonds (MarkerShape::diamond)
   bool polyline = false;  ///< a point set: the polyline through its points, in order
+  /// A drawing (SVG, DXF): its curves share one color and one legend entry,
+  /// the file's name (issue 39: a drawing of 19 subpaths made 19 entries).
+  bool drawing = false;
 };
 
 /// What `plot` draws: the options for every curve, and a second panel with the
