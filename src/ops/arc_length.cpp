@@ -217,6 +217,25 @@ void balanced_parts(BezierCurve piece, const ParameterMap& map, int depth, std::
   balanced_parts(right, reparameterized.then({0.5, 0.5, 0.0, 1.0}), depth + 1, out);
 }
 
+/// A rational piece moved so that its first control point is the origin: the
+/// length does not change, and the speed's numerator A' w - A w' no longer
+/// cancels the piece's distance from the origin (issue 39: a unit circle at
+/// (1e6, 1e6) had a speed known to 1e-10, and the default tolerance of 1e-12
+/// of its size was never met). The differences are exact for control points
+/// within a factor 2 of each other (Sterbenz), and within rounding of the
+/// piece's own size otherwise. Polynomial pieces need nothing: their
+/// derivative is made of differences already.
+BezierCurve moved_to_origin(BezierCurve piece) {
+  if (!piece.is_rational()) return piece;
+  const PointArray& points = piece.control_points();
+  const int d = points.dimension();
+  std::vector<double> moved(points.coordinates().begin(), points.coordinates().end());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int j = 0; j < d; ++j) moved[i * d + j] -= points[0][j];
+  return BezierCurve::from_trusted(PointArray::from_trusted(d, std::move(moved)),
+                                   std::vector<double>(piece.weights().begin(), piece.weights().end()));
+}
+
 /// The curve's pieces (rational ones as balanced parts) with their speeds,
 /// and the interval budget of one call. Part k covers span(k) of the curve's
 /// parameter; integrate and speed take the part's own parameter s,
@@ -228,7 +247,7 @@ class Quadrature {
     std::vector<BalancedPart> parts;
     for (std::size_t k = 0; k < pieces.pieces.size(); ++k) {
       const std::size_t first = parts.size();
-      balanced_parts(std::move(pieces.pieces[k]), {}, 0, parts);
+      balanced_parts(moved_to_origin(std::move(pieces.pieces[k])), {}, 0, parts);
       const Interval span{pieces.breakpoints[k], pieces.breakpoints[k + 1]};
       const double siblings = static_cast<double>(parts.size() - first);
       double lower = 0.0;  // where the part starts on the piece: where the one before ends

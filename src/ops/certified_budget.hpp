@@ -13,6 +13,7 @@
 #include "casteljau/core/point_array.hpp"
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/ops/tolerance.hpp"
+#include "../core/number_text.hpp"
 
 namespace casteljau::ops_detail {
 
@@ -24,7 +25,7 @@ namespace casteljau::ops_detail {
 inline Expected<double> certified_budget(const BezierCurve& curve, Tolerance tolerance, std::string_view what) {
   const std::string name(what);
   if (!(std::isfinite(tolerance.distance) && tolerance.distance > 0.0))
-    return Error{"the " + name + " tolerance must be a finite distance > 0, got " + std::to_string(tolerance.distance)};
+    return Error{"the " + name + " tolerance must be a finite distance > 0, got " + detail::number_text(tolerance.distance)};
   double weight_ratio = 1.0;
   if (curve.is_rational()) {
     const auto [lightest, heaviest] = std::minmax_element(curve.weights().begin(), curve.weights().end());
@@ -33,9 +34,9 @@ inline Expected<double> certified_budget(const BezierCurve& curve, Tolerance tol
   const double allowance = tolerances::kFlattenRoundingAllowance * scale_of(curve.control_points()) *
                            std::max(1.0, curve.degree() / 4.0) * weight_ratio;
   if (tolerance.distance < tolerances::kFlattenSmallestToleranceFactor * allowance)
-    return Error{"the " + name + " tolerance " + std::to_string(tolerance.distance) +
+    return Error{"the " + name + " tolerance " + detail::number_text(tolerance.distance) +
                  " is below what double precision can certify for this curve (" +
-                 std::to_string(tolerances::kFlattenSmallestToleranceFactor * allowance) + ")"};
+                 detail::number_text(tolerances::kFlattenSmallestToleranceFactor * allowance) + ")"};
   return tolerance.distance - allowance;
 }
 

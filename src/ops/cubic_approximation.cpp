@@ -118,14 +118,20 @@ Expected<CubicApproximation> approximate_by_cubics(CurveView curve, Tolerance to
   const BezierPieces pieces = to_bezier_pieces(curve);
   Approximator approximator;
   std::size_t replaced = 0;
+  // A tolerance that is no distance is refused even when every piece is
+  // exact (certified_budget's first check); one below what doubles certify
+  // matters only for pieces that are approximated (issue 39: a line at 1e6
+  // could not be written to SVG).
+  if (!(std::isfinite(tolerance.distance) && tolerance.distance > 0.0))
+    return ops_detail::certified_budget(pieces.pieces.front(), tolerance, "cubic approximation").error();
   for (std::size_t i = 0; i < pieces.pieces.size(); ++i) {
     const BezierCurve& piece = pieces.pieces[i];
-    auto budget = ops_detail::certified_budget(piece, tolerance, "cubic approximation");
-    if (!budget) return budget.error();
     if (!piece.is_rational() && piece.degree() <= 3) {
       if (Status kept = approximator.add(piece); !kept) return kept.error();
       continue;
     }
+    auto budget = ops_detail::certified_budget(piece, tolerance, "cubic approximation");
+    if (!budget) return budget.error();
     ++replaced;
     if (Status done = approximator.approximate(piece, *budget, 0); !done)
       return with_context(done.error(), "piece " + std::to_string(i));

@@ -44,6 +44,19 @@ out=$("$casteljau" length "$work/corner.json" 2>&1)
   { echo "FAIL: length of weights 1, 1e20, 1: $out"; failures=$((failures + 1)); }
 printf '{"type": "bezier", "control_points": [[0, 0], [1, 1], [2, 0]], "weights": [1, 1e10, 1]}' >"$work/corner.json"
 "$casteljau" length "$work/corner.json" >/dev/null 2>&1 || { echo "FAIL: length of weights 1, 1e10, 1 refused"; failures=$((failures + 1)); }
+# A unit circle and a half-unit line at (1e6, 1e6), as a survey drawing holds
+# them: measured at the default tolerance (issue 39: the circle was refused).
+printf '0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n10\n1000000\n20\n1000000\n40\n1\n0\nLINE\n10\n1000000\n20\n1000000\n11\n1000000.5\n21\n1000000\n0\nENDSEC\n0\nEOF\n' >"$work/far.dxf"
+out=$("$casteljau" length "$work/far.dxf" 2>&1)
+/usr/bin/python3 - "$out" <<'PY' || { echo "FAIL: length far from the origin: $out"; failures=$((failures + 1)); }
+import math, sys
+a, b = map(float, sys.argv[1].split())
+sys.exit(abs(a - 2 * math.pi) > 1e-11 or b != 0.5)
+PY
+# The half-unit line at 1e6 is written to SVG exactly (a line needs no
+# approximation; its tolerance was refused as below what doubles certify).
+check "a line far from the origin to SVG" "convert: 1 curve to SVG, every piece exact" \
+  convert "$work/far.dxf" --model 1 --to svg -o "$work/far.svg"
 "$casteljau" length "$examples/semicircle.json" -o "$work/length.txt" 2>"$work/stderr" &&
   [[ $(wc -l <"$work/length.txt") -eq 1 ]] || { echo "FAIL: -o"; failures=$((failures + 1)); }
 

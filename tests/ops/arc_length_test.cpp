@@ -193,6 +193,20 @@ TEST(ArcLength, OfRationalCurvesWithExtremeWeights) {
   EXPECT_NEAR(arc_length(flat, Tolerance{1e-12}).value(), 2.0, 1e-12);
 }
 
+TEST(ArcLength, OfCurvesFarFromTheOrigin) {
+  // Issue 39: a unit circle at (1e6, 1e6) (survey and UTM coordinates) was
+  // refused at the default tolerance, 1e-12 of its size: the rational speed
+  // cancelled the distance from the origin. Its length is 2 pi to that
+  // tolerance wherever it lies, and so is a quarter at the quarter length.
+  for (const double far : {1e6, 1e9, -3e12}) {
+    const BSplineCurve circle = make_circle(far, far, 1.0).value();
+    const Tolerance tolerance = default_arc_length_tolerance(circle);
+    EXPECT_NEAR(arc_length(circle, tolerance).value(), 2 * kPi, tolerance.distance) << far;
+    const double quarter = parameter_at_length(circle, kPi / 2, tolerance).value();
+    EXPECT_NEAR(arc_length(circle, Interval{0.0, quarter}, tolerance).value(), kPi / 2, 2 * tolerance.distance) << far;
+  }
+}
+
 /// A random weight, log-uniform over the valid range [1e-50, 1e50].
 double extreme_weight() { return std::pow(10.0, *rc::gen::inRange(-500, 501) / 10.0); }
 
