@@ -90,7 +90,9 @@ int convert_to_svg(const ConvertOptions& options) {
     tolerance = *number;
   }
   std::vector<SvgCurve> curves;
-  const bool from_svg = lowercase_extension(options.model) == ".svg";
+  // An SVG drawing keeps its elements, ids, stroke widths and fill rules;
+  // with a selection (--model, --id, --layer) it is read as every model file.
+  const bool from_svg = lowercase_extension(options.model) == ".svg" && !models_selected();
   if (from_svg) {
     const auto units = drawing_units_option(options.units);
     if (!units) return fail(units.error());

@@ -197,6 +197,10 @@ Status select_models(const std::string& path, FileModels& file) {
 }
 }  // namespace
 
+bool models_selected() {
+  return any_given(selected_model_options) || any_given(selected_id_options) || any_given(selected_layer_options);
+}
+
 void add_reading_options(CLI::App* command) {
   command->add_flag("--strict", strict_drawings,
                     "Refuse a drawing that draws what casteljau leaves out (text, images, clip paths, block "

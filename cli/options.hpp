@@ -84,6 +84,9 @@ Status skipped_elements(const std::string& path, const std::vector<std::string>&
 /// (a DXF layer); given together, a model must match them all.
 void add_reading_options(CLI::App* command);
 
+/// Whether --model, --id or --layer was given (read_model_file applies them).
+bool models_selected();
+
 /// The help of a MODEL argument that takes any model file.
 inline constexpr const char* kModelFileHelp =
     "Model JSON, a CSV point set taken as one Bézier curve, an SVG drawing (one curve per subpath, in the "

@@ -101,6 +101,8 @@ out=$("$casteljau" length "$work/drawing.dxf" --layer walls --id 2B 2>/dev/null)
 [[ "$out" == 3 ]] || { echo "FAIL: --layer walls --id 2B: $out"; failures=$((failures + 1)); }
 out=$("$casteljau" closest "$examples/sailboat.svg" --id hull --point 100,10)
 [[ "$(echo "$out" | tail -1 | cut -d, -f1)" == 0 ]] || { echo "FAIL: closest --id hull: $out"; failures=$((failures + 1)); }
+"$casteljau" convert "$work/drawing.svg" --to svg --id c -o "$work/c.svg" 2>/dev/null >/dev/null
+[[ "$(grep -c '<path' "$work/c.svg")" == 1 ]] || { echo "FAIL: convert --to svg --id c: $(cat "$work/c.svg")"; failures=$((failures + 1)); }
 expect_error "--id that matches nothing" "'$work/drawing.svg' has no id 'zz' (ids: a, c)" length "$work/drawing.svg" --id zz
 expect_error "--layer that matches nothing" "'$work/drawing.dxf' has no layer 'roof' (layers: walls)" length "$work/drawing.dxf" --layer roof
 expect_error "--model beyond the models" "--model 9: '$work/drawing.svg' holds 3 models (models[0] to models[2])" \
