@@ -5,10 +5,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <limits>
-#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -61,14 +59,6 @@ class Tally {
   std::vector<std::pair<std::string, std::size_t>> entries_;
 };
 
-/// "a, b, c" of at most `shown` names, then "and N more".
-std::string listed(const std::vector<std::string>& names, std::size_t shown = 12) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size() && i < shown; ++i) out += (i == 0 ? "" : ", ") + names[i];
-  if (names.size() > shown) out += fmt::format(" and {} more", names.size() - shown);
-  return out;
-}
-
 std::string unit_line(const FileModels& file) {
   if (file.insunits == 4) return "millimetres";
   if (file.insunits != 0) {
@@ -76,8 +66,8 @@ std::string unit_line(const FileModels& file) {
     return mm > 0.0 ? fmt::format("{} ($INSUNITS {}, {:g} mm each)", dxf_unit_name(file.insunits), file.insunits, mm)
                     : fmt::format("{} ($INSUNITS {}: no length)", dxf_unit_name(file.insunits), file.insunits);
   }
-  if (file.format == "SVG drawing") return "none stated (the root's user units; --units mm reads millimetres)";
-  if (file.format == "DXF drawing") return "none stated ($INSUNITS 0)";
+  if (file.format == ModelFileFormat::svg) return "none stated (the root's user units; --units mm reads millimetres)";
+  if (file.format == ModelFileFormat::dxf) return "none stated ($INSUNITS 0)";
   return "none (model JSON and CSV numbers have no unit)";
 }
 
@@ -85,7 +75,7 @@ int run_info(const InfoOptions& options) {
   const auto read = read_model_file_with_unit(options.model, options.units, /*report_skipped=*/false);
   if (!read) return fail(read.error());
   const FileModels& file = *read;
-  std::string out = fmt::format("{}: {}", display_name(options.model), file.format);
+  std::string out = fmt::format("{}: {}", display_name(options.model), format_name(file.format));
   if (file.page_bottom)
     out += fmt::format(", upright: y up from its page's bottom edge (y = {:g} in the file)", *file.page_bottom);
   out += fmt::format("\nunit: {}\n", unit_line(file));
@@ -102,7 +92,7 @@ int run_info(const InfoOptions& options) {
   out += fmt::format("models: {} ({}), in {}\n", file.models.size(), types.text(), spaces);
 
   // Elements of a drawing (a path's subpaths are one element), ids, layers.
-  if (file.format == "SVG drawing" || file.format == "DXF drawing") {
+  if (file.is_drawing()) {
     Tally elements, layers;
     std::vector<std::string> ids;
     for (std::size_t m = 0; m < file.origins.size(); ++m) {
@@ -112,11 +102,11 @@ int run_info(const InfoOptions& options) {
       if (same) continue;
       elements.add(o.element);
       if (!o.id.empty()) ids.push_back(o.id);
-      if (file.format == "DXF drawing") layers.add(o.layer.empty() ? "0" : o.layer);
+      if (file.format == ModelFileFormat::dxf) layers.add(o.layer.empty() ? "0" : o.layer);
     }
     out += fmt::format("elements: {} ({})\n", elements.total(), elements.text());
-    out += fmt::format("{}: {}\n", file.format == "DXF drawing" ? "handles" : "ids",
-                       ids.empty() ? std::string("none") : listed(ids));
+    out += fmt::format("{}: {}\n", file.format == ModelFileFormat::dxf ? "handles" : "ids",
+                       ids.empty() ? std::string("none") : listed(ids, 12));
     if (!layers.empty())
       out += fmt::format("layers: {}\n", layers.text([](const std::string& key, std::size_t count) {
                            return fmt::format("{} ({} entit{})", key, count, count == 1 ? "y" : "ies");

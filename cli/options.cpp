@@ -183,12 +183,9 @@ Status select_models(const std::string& path, FileModels& file) {
     if (index) wanted += fmt::format("models[{}]", *index);
     if (by_id) wanted += fmt::format("{}id '{}'", wanted.empty() ? "" : " with ", selected_id.substr(0, 60));
     if (by_layer) wanted += fmt::format("{}layer '{}'", wanted.empty() ? "" : " on ", selected_layer.substr(0, 60));
-    const char* kind = by_layer && !by_id ? "layers" : file.format == "DXF drawing" ? "handles" : "ids";
-    std::string listed;
-    for (std::size_t i = 0; i < names.size() && i < 10; ++i) listed += (i ? ", " : "") + names[i];
-    if (names.size() > 10) listed += fmt::format(" and {} more", names.size() - 10);
+    const char* kind = by_layer && !by_id ? "layers" : file.format == ModelFileFormat::dxf ? "handles" : "ids";
     return Error{fmt::format("'{}' has no {} ({}: {})", display_name(path), wanted, kind,
-                             names.empty() ? std::string("none") : listed),
+                             names.empty() ? std::string("none") : listed(names, 10)),
                  ErrorKind::invalid_argument};
   }
   file.models = std::move(kept.models);
@@ -196,6 +193,13 @@ Status select_models(const std::string& path, FileModels& file) {
   return {};
 }
 }  // namespace
+
+std::string listed(const std::vector<std::string>& names, std::size_t shown) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size() && i < shown; ++i) out += (i == 0 ? "" : ", ") + names[i];
+  if (names.size() > shown) out += fmt::format(" and {} more", names.size() - shown);
+  return out;
+}
 
 bool models_selected() {
   return any_given(selected_model_options) || any_given(selected_id_options) || any_given(selected_layer_options);

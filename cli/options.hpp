@@ -84,6 +84,9 @@ Status skipped_elements(const std::string& path, const std::vector<std::string>&
 /// (a DXF layer); given together, a model must match them all.
 void add_reading_options(CLI::App* command);
 
+/// "a, b, c" of at most `shown` names, then " and N more".
+std::string listed(const std::vector<std::string>& names, std::size_t shown);
+
 /// Whether --model, --id or --layer was given (read_model_file applies them).
 bool models_selected();
 

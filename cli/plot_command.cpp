@@ -69,7 +69,7 @@ Expected<render::PlotSource> read_source(const std::string& path, const CsvStyle
     auto file = read_model_file_with_unit(path, units);
     if (!file) return file.error();
     source.models = std::move(file->models);
-    source.drawing = file->format == "SVG drawing" || file->format == "DXF drawing";
+    source.drawing = file->is_drawing();
     return source;
   }
   {

@@ -197,7 +197,7 @@ void bind_io(py::module_& module) {
           origins.append(py::dict(py::arg("element") = o.element, py::arg("id") = o.id, py::arg("layer") = o.layer,
                                   py::arg("line") = o.line));
         py::dict result;
-        result["format"] = file.format;
+        result["format"] = format_name(file.format);
         result["models"] = models_to_python(std::move(file.models));
         result["origins"] = origins;
         result["insunits"] = file.insunits;

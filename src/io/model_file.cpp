@@ -48,7 +48,7 @@ Expected<FileModels> models_of_drawing(std::string_view text, const std::string&
   if (auto refused = refusal(drawing->problems, drawing->curves.empty(), drawing->skipped, source, "path or shape"))
     return *refused;
   FileModels file;
-  file.format = "SVG drawing";
+  file.format = ModelFileFormat::svg;
   file.insunits = units == DrawingUnits::millimetres ? 4 : 0;
   file.page_bottom = drawing->page_bottom;
   file.skipped = std::move(drawing->skipped);
@@ -66,7 +66,7 @@ Expected<FileModels> models_of_dxf(std::string_view text, const std::string& sou
   auto drawing = parse_dxf_drawing(text, source);
   if (!drawing) return drawing.error();
   FileModels file;
-  file.format = "DXF drawing";
+  file.format = ModelFileFormat::dxf;
   file.insunits = units == DrawingUnits::millimetres ? 4 : drawing->insunits;
   file.skipped = drawing->skipped;
   if (auto refused = refusal(drawing->problems, drawing->curves.empty(), drawing->skipped, source, "curve entity"))
@@ -109,6 +109,16 @@ Expected<FileModels> models_of_dxf(std::string_view text, const std::string& sou
 
 }  // namespace
 
+const char* format_name(ModelFileFormat format) {
+  switch (format) {
+    case ModelFileFormat::model_json: return "model JSON";
+    case ModelFileFormat::csv: return "CSV point set";
+    case ModelFileFormat::svg: return "SVG drawing";
+    case ModelFileFormat::dxf: return "DXF drawing";
+  }
+  return "";
+}
+
 std::string skipped_summary(const std::vector<std::string>& skipped) {
   // The readers write "line 7: <text> (why)" (SVG) and "line 300: TEXT" (DXF).
   std::vector<std::pair<std::string, std::size_t>> kinds;
@@ -137,43 +147,42 @@ Expected<FileModels> read_file_models(const std::filesystem::path& path, Drawing
   if (!text) return text.error();
   const std::string source = display_name(path);
   const std::string name = path.string();
-  enum class Format { json, csv, svg, dxf } format = Format::csv;
+  ModelFileFormat format = ModelFileFormat::csv;
   if (io_detail::has_extension(name, ".json")) {
-    format = Format::json;
+    format = ModelFileFormat::model_json;
   } else if (io_detail::has_extension(name, ".svg")) {
-    format = Format::svg;
+    format = ModelFileFormat::svg;
   } else if (io_detail::has_extension(name, ".dxf")) {
-    format = Format::dxf;
+    format = ModelFileFormat::dxf;
   } else if (!io_detail::has_extension(name, ".csv")) {
     const std::string_view content = io_detail::without_byte_order_mark(*text);
     const auto first = content.find_first_not_of(" \t\r\n");
-    if (first != std::string_view::npos && content[first] == '{') format = Format::json;
-    if (first != std::string_view::npos && content[first] == '<') format = Format::svg;
+    if (first != std::string_view::npos && content[first] == '{') format = ModelFileFormat::model_json;
+    if (first != std::string_view::npos && content[first] == '<') format = ModelFileFormat::svg;
     // DXF: a group code 0 (or a 999 comment) on the first line, then SECTION.
     if (first != std::string_view::npos && (content.substr(first, 4) == "999\n" || content.substr(first, 5) == "999\r\n" ||
                                             ((content.substr(first, 2) == "0\n" || content.substr(first, 3) == "0\r\n") &&
                                              content.find("SECTION") < first + 16)))
-      format = Format::dxf;
+      format = ModelFileFormat::dxf;
   }
-  if (format == Format::svg) return models_of_drawing(*text, source, units);
-  if (format == Format::dxf) return models_of_dxf(*text, source, units);
+  if (format == ModelFileFormat::svg) return models_of_drawing(*text, source, units);
+  if (format == ModelFileFormat::dxf) return models_of_dxf(*text, source, units);
   if (units != DrawingUnits::user)
     return Error{fmt::format("{}: millimetres are asked of {}, whose numbers have no unit (--units applies to "
                              "drawings: SVG, DXF)",
-                             source, format == Format::json ? "model JSON" : "a CSV point set"),
+                             source, format == ModelFileFormat::model_json ? "model JSON" : "a CSV point set"),
                  ErrorKind::invalid_argument};
   FileModels file;
-  if (format == Format::json) {
+  file.format = format;
+  if (format == ModelFileFormat::model_json) {
     auto models = parse_models_json(*text, source);
     if (!models) return models.error();
-    file.format = "model JSON";
     file.models = std::move(*models);
   } else {
     auto points = parse_points_csv(*text, source);
     if (!points) return points.error();
     auto curve = BezierCurve::make(std::move(*points));
     if (!curve) return with_context(curve.error(), source);
-    file.format = "CSV point set";
     file.models.emplace_back(std::move(*curve));
   }
   for (const Model& model : file.models) file.origins.push_back({type_name(model), "", "", 0});

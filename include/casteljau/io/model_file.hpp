@@ -41,11 +41,19 @@ struct ModelOrigin {
   std::size_t line = 0;  ///< the line where the element starts (drawings); 0 for model JSON and CSV
 };
 
+/// The formats read_models reads.
+enum class ModelFileFormat { model_json, csv, svg, dxf };
+
+/// The format as messages and `casteljau info` name it: "model JSON", "CSV
+/// point set", "SVG drawing", "DXF drawing".
+const char* format_name(ModelFileFormat format);
+
 /// The models of a file with what the file states besides them.
 struct FileModels {
   std::vector<Model> models;
   std::vector<ModelOrigin> origins;  ///< one per model: a drawing's subpaths share their element's
-  std::string format;                ///< "model JSON", "CSV point set", "SVG drawing", "DXF drawing"
+  ModelFileFormat format = ModelFileFormat::model_json;
+  bool is_drawing() const { return format == ModelFileFormat::svg || format == ModelFileFormat::dxf; }
   /// The unit of the numbers as DXF's $INSUNITS code (io/dxf.hpp:
   /// dxf_unit_millimetres, dxf_unit_name): 4 for a drawing read in
   /// millimetres, a DXF drawing's own $INSUNITS when read in its units; 0
