@@ -70,6 +70,7 @@ fractions are lower by nature.
 | W8 | | | no hardware limit is stated: the work per pair depends on how the curves meet; rows report misses and spurious points against the exact oracle |
 | W9 | | | no hardware limit is stated: the quadrature's node count depends on the curve; rows report error_rel against the oracle |
 | W10 | | | no hardware limit is stated: rows are MB of file read per second; each checks the count of segments or entities it read |
+| W11 | | | no hardware limit is stated: rows are one whole run (MB of SVG per second, or contours ordered per second); each checks that every contour is cut once and the ordered rapid moves are shorter, the greedy rows that the k-d tree's order is as long as the plain search's |
 """
 
 
@@ -539,6 +540,7 @@ WORKLOAD_TITLES = OrderedDict(
     W8="W8: intersections of 10⁴ pairs of plane cubic Béziers (10% tangent, 10% near-tangent), time per pair",
     W9="W9: arc length of W1's curve (997 cubic spans in 3D) within 1e-9 relative, time per length",
     W10="W10: reading a 10 MB SVG path and a 10 MB DXF drawing (generated, seeded) into curves, MB of file per second",
+    W11="W11: G-code of a 10 MB SVG drawing (generated, seeded; 0.01 mm), arcs or lines, and its cutting order",
 )
 
 

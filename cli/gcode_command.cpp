@@ -127,9 +127,9 @@ void add_gcode_command(CLI::App& app, int& status) {
       "each curve fitted by circular arcs and lines (G2/G3 in the IJK form, G1) within --tolerance, or by lines "
       "only with --lines; contours ordered to shorten the rapid moves (G0 at --safe-z), each cut down to --depth "
       "in passes of at most --step-down. Coordinates are taken as they are, in --units (mm: G21, in: G20); an SVG "
-      "drawing in its user units, y down as in the file. Surfaces and curves in space are refused. Numbers have "
-      "--decimals digits (4 in mm, 5 in inches by default); each arc's start and end radii agree within 1e-4 "
-      "after rounding (docs/formats.md, G-code).");
+      "drawing in its user units, upright (y up from its page's bottom edge). Surfaces and curves in space are "
+      "refused. Numbers have --decimals digits (4 in mm, 5 in inches by default); each arc's start and end radii "
+      "agree within 1e-4 after rounding (docs/formats.md, G-code).");
   CLI::Option* inputs =
       gcode->add_option("INPUT", options->inputs, kModelFileHelp)->required();
   gcode->add_option("--tolerance", options->tolerance,

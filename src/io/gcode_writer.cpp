@@ -1,6 +1,6 @@
 // Toolpaths to RS-274/NGC programs (io/gcode.hpp says what is written).
-// The program is built in memory: the contours ordered (greedy nearest
-// neighbour), each cut pass after pass, every number rounded to the grid of
+// The program is built in memory: the contours ordered (io/gcode_order.hpp),
+// each cut pass after pass, every number rounded to the grid of
 // the decimals exactly as the controller will read it, then the header that
 // counts what the body holds.
 #include <fmt/format.h>
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "casteljau/io/gcode.hpp"
+#include "casteljau/io/gcode_order.hpp"
 #include "casteljau/version.hpp"
 
 namespace casteljau {
@@ -117,30 +118,6 @@ class Numbers {
 
 const char* unit_name(GcodeUnits units) { return units == GcodeUnits::millimetres ? "mm" : "inch"; }
 
-/// Whether the contour ends where it starts, within the tolerance.
-bool is_closed(const GcodeContour& contour, Tolerance tolerance) {
-  return distance(contour.front().start, contour.back().end) <= tolerance.distance;
-}
-
-/// The contour run backwards: segments in reverse order, each from its end
-/// to its start, turning the other way.
-GcodeContour reversed(const GcodeContour& contour) {
-  GcodeContour out;
-  out.reserve(contour.size());
-  for (auto it = contour.rbegin(); it != contour.rend(); ++it) out.push_back(ArcSegment{it->end, it->start, -it->bulge});
-  return out;
-}
-
-/// How a contour is entered: at the start of segment `joint` (a closed
-/// contour, rotated to start there) or, for an open one, at its end
-/// (`backwards`: run reversed).
-struct Entry {
-  std::size_t contour = 0;
-  std::size_t joint = 0;
-  bool backwards = false;
-  double distance = std::numeric_limits<double>::infinity();
-};
-
 /// A box in the plane, empty until a point is added.
 struct PlaneBox {
   Vec2 lower{{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()}};
@@ -164,120 +141,6 @@ double drawing_size(const std::vector<GcodeContour>& contours, double floor) {
     }
   if (box.empty()) return floor;
   return std::max(std::hypot(box.upper[0] - box.lower[0], box.upper[1] - box.lower[1]), floor);
-}
-
-/// Where the tool leaves a contour entered at its front: its end for an
-/// open contour cut an odd number of times, else where it entered.
-Vec2 exit_of(const GcodeContour& contour, Tolerance tolerance, int passes) {
-  return is_closed(contour, tolerance) || passes % 2 == 0 ? contour.front().start : contour.back().end;
-}
-
-/// The length of the rapid moves in the plane were the contours cut in this
-/// order, each entered at its front, from the origin (Moves counts the same).
-double rapid_length_of(const std::vector<GcodeContour>& contours, Tolerance tolerance, int passes) {
-  Vec2 tool{};
-  double length = 0.0;
-  for (const GcodeContour& contour : contours) {
-    if (contour.empty()) continue;
-    length += distance(tool, contour.front().start);
-    tool = exit_of(contour, tolerance, passes);
-  }
-  return length;
-}
-
-/// 2-opt on the order (G. A. Croes, "A method for solving traveling-salesman
-/// problems", Operations Research 6, 1958): reversing the run of contours i..j
-/// (each run the other way: an open contour cut an odd number of times enters
-/// at its old exit) replaces the rapid moves exit(i-1) -> entry(i) and exit(j)
-/// -> entry(j+1) by exit(i-1) -> exit(j) and entry(i) -> entry(j+1); every
-/// reversal that shortens the rapid moves is made, sweep after sweep, until
-/// none does (at most kGcodeMostOrderSweeps). The tour starts at the origin
-/// and ends anywhere.
-void improve_by_two_opt(std::vector<GcodeContour>& order, Tolerance tolerance, int passes) {
-  const std::size_t n = order.size();
-  if (n < 2 || n > tolerances::kGcodeMostTwoOptContours) return;
-  std::vector<Vec2> entry(n), exit(n);
-  std::vector<bool> reversible(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    entry[k] = order[k].front().start;
-    exit[k] = exit_of(order[k], tolerance, passes);
-    reversible[k] = !(is_closed(order[k], tolerance) || passes % 2 == 0);
-  }
-  // The tool's position before contour k: the origin, or where k - 1 left it.
-  const auto before = [&](std::size_t k) { return k == 0 ? Vec2{} : exit[k - 1]; };
-  // A gain must beat the rounding of the distances compared.
-  const double slack = 1e-12 * drawing_size(order, 1.0);
-  for (int sweep = 0; sweep < tolerances::kGcodeMostOrderSweeps; ++sweep) {
-    bool improved = false;
-    for (std::size_t i = 0; i + 1 < n; ++i)
-      for (std::size_t j = i + 1; j < n; ++j) {
-        const Vec2 from = before(i);
-        double now = distance(from, entry[i]), then = distance(from, exit[j]);
-        if (j + 1 < n) {
-          now += distance(exit[j], entry[j + 1]);
-          then += distance(entry[i], entry[j + 1]);
-        }
-        if (!(then < now - slack)) continue;
-        std::reverse(order.begin() + static_cast<std::ptrdiff_t>(i), order.begin() + static_cast<std::ptrdiff_t>(j + 1));
-        std::reverse(entry.begin() + static_cast<std::ptrdiff_t>(i), entry.begin() + static_cast<std::ptrdiff_t>(j + 1));
-        std::reverse(exit.begin() + static_cast<std::ptrdiff_t>(i), exit.begin() + static_cast<std::ptrdiff_t>(j + 1));
-        std::reverse(reversible.begin() + static_cast<std::ptrdiff_t>(i),
-                     reversible.begin() + static_cast<std::ptrdiff_t>(j + 1));
-        for (std::size_t k = i; k <= j; ++k) {
-          std::swap(entry[k], exit[k]);
-          if (reversible[k]) order[k] = reversed(order[k]);
-        }
-        improved = true;
-      }
-    if (!improved) break;
-  }
-}
-
-/// The contours in cutting order, each rotated or reversed to start where
-/// the tool is nearest: greedy nearest neighbour from the origin, then
-/// improved by 2-opt. With an odd number of passes an open contour leaves
-/// the tool at its far end, with an even number back at its entry.
-std::vector<GcodeContour> cutting_order(const std::vector<GcodeContour>& contours, Tolerance tolerance, int passes) {
-  std::vector<std::size_t> left;
-  for (std::size_t c = 0; c < contours.size(); ++c)
-    if (!contours[c].empty()) left.push_back(c);
-  std::vector<GcodeContour> order;
-  order.reserve(left.size());
-  Vec2 tool{};
-  while (!left.empty()) {
-    Entry best;
-    std::size_t best_index = 0;
-    for (std::size_t k = 0; k < left.size(); ++k) {
-      const GcodeContour& contour = contours[left[k]];
-      auto consider = [&](std::size_t joint, bool backwards, Vec2 point) {
-        const double d = distance(tool, point);
-        if (d < best.distance) {
-          best = Entry{left[k], joint, backwards, d};
-          best_index = k;
-        }
-      };
-      if (is_closed(contour, tolerance)) {
-        for (std::size_t j = 0; j < contour.size(); ++j) consider(j, false, contour[j].start);
-      } else {
-        consider(0, false, contour.front().start);
-        consider(0, true, contour.back().end);
-      }
-    }
-    const GcodeContour& chosen = contours[best.contour];
-    GcodeContour entered = best.backwards ? reversed(chosen) : chosen;
-    std::rotate(entered.begin(), entered.begin() + static_cast<std::ptrdiff_t>(best.joint), entered.end());
-    tool = exit_of(entered, tolerance, passes);
-    order.push_back(std::move(entered));
-    left.erase(left.begin() + static_cast<std::ptrdiff_t>(best_index));
-  }
-  improve_by_two_opt(order, tolerance, passes);
-  // The input's own order, improved the same way, when it ends up shorter
-  // (nearest neighbour can lose to a drawing already in a good order).
-  std::vector<GcodeContour> given;
-  for (const GcodeContour& contour : contours)
-    if (!contour.empty()) given.push_back(contour);
-  improve_by_two_opt(given, tolerance, passes);
-  return rapid_length_of(given, tolerance, passes) < rapid_length_of(order, tolerance, passes) ? given : order;
 }
 
 /// The middle of the arc a controller moves along from `start` about
@@ -601,8 +464,8 @@ Expected<GcodeProgram> write_gcode(const Toolpath& toolpath, const GcodeOptions&
   if (options.dialect == GcodeDialect::linuxcnc) body += fmt::format("G91.1 G64 P{}\n", numbers.text(numbers.unit()));
   const std::vector<GcodeContour> order = cutting_order(contours, toolpath.tolerance, passes);
   for (const GcodeContour& contour : order) {
-    const bool closed = is_closed(contour, toolpath.tolerance);
-    const GcodeContour backwards = closed ? GcodeContour{} : reversed(contour);
+    const bool closed = contour_is_closed(contour, toolpath.tolerance);
+    const GcodeContour backwards = closed ? GcodeContour{} : reversed_contour(contour);
     moves.rapid_to(contour.front().start);
     for (int pass = 1; pass <= passes; ++pass) {
       moves.plunge_to(-options.depth * pass / passes);
