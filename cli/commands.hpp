@@ -26,5 +26,6 @@ void add_intersect_command(CLI::App& app, int& status);    // cli/intersect_comm
 void add_text_command(CLI::App& app, int& status);         // cli/text_command.cpp
 void add_gcode_command(CLI::App& app, int& status);        // cli/gcode_command.cpp
 void add_info_command(CLI::App& app, int& status);         // cli/info_command.cpp
+void add_arcs_command(CLI::App& app, int& status);         // cli/arcs_command.cpp
 
 }  // namespace casteljau::cli

@@ -69,6 +69,9 @@ constexpr std::array kEntries{
     Entry{"gcode", "A G-code toolpath (G0-G3) of plane curves, within a tolerance",
           "casteljau gcode examples/semicircle.json --tolerance 0.01 -o semicircle.nc",
           "a program that cuts the exact NURBS half circle of radius 3 as one G2 arc, 1 mm deep"},
+    Entry{"arcs", "Plane curves as circular arcs and line segments within a tolerance (JSON or DXF)",
+          "casteljau arcs examples/sailboat.svg --tolerance 0.01 -o boat.dxf",
+          "the drawing's 19 curves as LWPOLYLINE entities with bulges, every point within 0.01 of the curves"},
 };
 
 /// The subcommand's entry in kEntries; every subcommand has one.

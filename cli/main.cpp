@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   add_text_command(app, status);
   add_gcode_command(app, status);
   add_info_command(app, status);
+  add_arcs_command(app, status);
   set_up_help(app);
 
   if (const auto unknown = unknown_subcommand(app, argc, argv)) return fail(*unknown);

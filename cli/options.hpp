@@ -93,7 +93,7 @@ bool models_selected();
 /// The help of a MODEL argument that takes any model file.
 inline constexpr const char* kModelFileHelp =
     "Model JSON, a CSV point set taken as one Bézier curve, an SVG drawing (one curve per subpath, in the "
-    "root's user units, y down) or a DXF drawing (one curve per curve entity, in its units)";
+    "root's user units, upright: y up from the page's bottom edge) or a DXF drawing (one curve per curve entity, in its units)";
 
 /// "head.csv: <message>": a library error about a file's data, naming the file.
 Error in_file(const std::string& path, const Error& error);

@@ -21,6 +21,7 @@
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/curves/curve_view.hpp"
 #include "casteljau/ops/arc_length.hpp"
+#include "casteljau/ops/arc_spline.hpp"
 #include "casteljau/ops/bounds.hpp"
 #include "casteljau/ops/closest_point.hpp"
 #include "casteljau/ops/curvature_extrema.hpp"
@@ -422,6 +423,31 @@ void bind_ops(py::module_& module) {
       py::arg("curve"), py::arg("tolerance") = py::none(),
       "The self-intersections of a curve (plane or in space; a < b, both on it), as intersections() reports "
       "them; the joints of its pieces and the seam of a closed curve are not self-intersections, nor is a cusp.");
+
+  module.def(
+      "fit_arcs",
+      [](const py::object& curve, double tolerance) {
+        const CurveView view = curve_of(curve, "curve");
+        const Tolerance checked = tolerance_from(tolerance, "tolerance");
+        const ArcSpline spline = unwrap(without_gil([&] { return fit_arcs(view, checked); }));
+        DoubleArray segments({static_cast<py::ssize_t>(spline.segments.size()), py::ssize_t{5}});
+        double* row = segments.mutable_data();
+        for (const ArcSegment& s : spline.segments) {
+          for (const double x : {s.start[0], s.start[1], s.end[0], s.end[1], s.bulge}) *row++ = x;
+        }
+        py::dict result;
+        result["segments"] = segments;
+        result["parameters"] = to_numpy(std::span<const double>(spline.parameters));
+        result["deviation_bound"] = spline.deviation_bound;
+        return result;
+      },
+      py::arg("curve"), py::arg("tolerance"),
+      "A plane curve as a chain of circular arcs and line segments within `tolerance` of it (certified biarcs, "
+      "tangent where the curve is smooth; ops/arc_spline.hpp, docs/cnc.md), as a dict: 'segments' (n, 5), each "
+      "row x0, y0, x1, y1, bulge (tan(sweep / 4), > 0 counterclockwise, 0 for a line; DXF's bulge), each "
+      "segment starting where the one before ends; 'parameters' (n + 1,), the curve's parameter at each "
+      "segment's start and at the end; 'deviation_bound', the largest certified distance (<= tolerance). "
+      "ValueError for a curve not in the plane or a tolerance not > 0. The GIL is released.");
 
   module.def(
       "flatten_segment_count",

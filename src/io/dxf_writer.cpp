@@ -1,4 +1,5 @@
-// Curves to a DXF R2000 document of SPLINE entities (io/dxf.hpp says what).
+// Curves to a DXF R2000 document of SPLINE entities, arc splines to one of
+// LWPOLYLINE entities with bulges (io/dxf.hpp says what).
 // The structure follows the DXF reference for AC1015: every table and block
 // record a reader looks up (the layer 0, the Continuous line type, the model
 // and paper space blocks), owner handles (330) and subclass markers (100), and
@@ -7,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -201,26 +203,36 @@ void spline(Writer& w, const BSplineCurve& curve) {
   }
 }
 
-}  // namespace
-
-Expected<std::string> write_dxf_drawing(std::span<const Model> curves, int insunits) {
-  std::vector<BSplineCurve> splines;
-  for (std::size_t i = 0; i < curves.size(); ++i) {
-    if (is_surface(curves[i]))
-      return Error{fmt::format("curve {} is a surface ({}); DXF SPLINE entities hold curves", i, type_name(curves[i]))};
-    const int d = dimension_of(curves[i]);
-    if (d != 2 && d != 3)
-      return Error{fmt::format("curve {} lives in R^{}, DXF holds plane and space curves", i, d)};
-    auto spline = to_bspline(curves[i]);
-    if (!spline) return with_context(spline.error(), fmt::format("curve {}", i));
-    splines.push_back(std::get<BSplineCurve>(std::move(*spline)));
+/// An arc spline as one LWPOLYLINE: a vertex at each segment's start, its
+/// bulge on the vertex it leaves; the last end as a vertex too unless the
+/// spline closes (flag 1: the closing segment's bulge on the last vertex).
+void polyline(Writer& w, const ArcSpline& spline) {
+  const std::vector<ArcSegment>& segments = spline.segments;
+  const bool closed = segments.front().start == segments.back().end;
+  entity_start(w, "LWPOLYLINE", kModelSpace, false);
+  w.group(100, "AcDbPolyline");
+  w.group(90, static_cast<int>(segments.size() + (closed ? 0 : 1)));
+  w.group(70, closed ? 1 : 0);
+  w.real(43, 0.0);
+  for (const ArcSegment& segment : segments) {
+    w.real(10, segment.start[0]);
+    w.real(20, segment.start[1]);
+    if (segment.bulge != 0.0) w.real(42, segment.bulge);
   }
+  if (!closed) {
+    w.real(10, segments.back().end[0]);
+    w.real(20, segments.back().end[1]);
+  }
+}
+
+/// The whole document around the entities `write_entities` writes.
+std::string document(int insunits, const std::function<void(Writer&)>& write_entities) {
   Writer body;
   tables(body);
   blocks(body);
   body.group(0, "SECTION");
   body.group(2, "ENTITIES");
-  for (const BSplineCurve& s : splines) spline(body, s);
+  write_entities(body);
   body.group(0, "ENDSEC");
   body.group(0, "SECTION");
   body.group(2, "OBJECTS");
@@ -254,6 +266,37 @@ Expected<std::string> write_dxf_drawing(std::span<const Model> curves, int insun
   head.group(2, "CLASSES");
   head.group(0, "ENDSEC");
   return head.text() + body.text();
+}
+
+}  // namespace
+
+Expected<std::string> write_dxf_drawing(std::span<const Model> curves, int insunits) {
+  std::vector<BSplineCurve> splines;
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    if (is_surface(curves[i]))
+      return Error{fmt::format("curve {} is a surface ({}); DXF SPLINE entities hold curves", i, type_name(curves[i]))};
+    const int d = dimension_of(curves[i]);
+    if (d != 2 && d != 3)
+      return Error{fmt::format("curve {} lives in R^{}, DXF holds plane and space curves", i, d)};
+    auto spline = to_bspline(curves[i]);
+    if (!spline) return with_context(spline.error(), fmt::format("curve {}", i));
+    splines.push_back(std::get<BSplineCurve>(std::move(*spline)));
+  }
+  return document(insunits, [&](Writer& w) {
+    for (const BSplineCurve& s : splines) spline(w, s);
+  });
+}
+
+Expected<std::string> write_dxf_arc_polylines(std::span<const ArcSpline> splines, int insunits) {
+  for (std::size_t i = 0; i < splines.size(); ++i) {
+    if (splines[i].segments.empty()) return Error{fmt::format("arc spline {} has no segment", i)};
+    for (const ArcSegment& segment : splines[i].segments)
+      for (const double x : {segment.start[0], segment.start[1], segment.end[0], segment.end[1], segment.bulge})
+        if (!std::isfinite(x)) return Error{fmt::format("arc spline {} has a number that is not finite: {}", i, x)};
+  }
+  return document(insunits, [&](Writer& w) {
+    for (const ArcSpline& s : splines) polyline(w, s);
+  });
 }
 
 }  // namespace casteljau

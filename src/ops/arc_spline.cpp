@@ -75,6 +75,7 @@ namespace {
 
 using tolerances::kArcFitReachSteps;
 using tolerances::kArcSameCircle;
+using tolerances::kArcStraightSagitta;
 
 /// A stretch of curve as homogeneous Bernstein coefficients (w x, w y, w).
 struct Stretch {
@@ -482,9 +483,17 @@ Expected<ArcSpline> fit_arcs(CurveView curve, Tolerance tolerance) {
   result.segments.reserve(joined.size());
   result.parameters.reserve(joined.size() + 1);
   for (const Fitted& f : joined) {
-    result.segments.push_back(f.arc);
+    ArcSegment segment = f.arc;
+    double bound = f.bound;
+    // An arc straight within rounding is its chord (the sagitta is |bulge| chord / 2).
+    const double sagitta = std::abs(segment.bulge) * norm(segment.end - segment.start) / 2.0;
+    if (segment.bulge != 0.0 && sagitta <= kArcStraightSagitta * scale && bound + sagitta <= tolerance.distance) {
+      segment.bulge = 0.0;
+      bound += sagitta;
+    }
+    result.segments.push_back(segment);
     result.parameters.push_back(f.u0);
-    result.deviation_bound = std::max(result.deviation_bound, f.bound);
+    result.deviation_bound = std::max(result.deviation_bound, bound);
   }
   result.parameters.push_back(bezier.breakpoints.back());
   // The last end exactly the curve's end.

@@ -20,11 +20,11 @@ expect_error "a long spelling" "unknown subcommand 'evaluate'; did you mean 'eva
 expect_error "a typo" "unknown subcommand 'tesselate'; did you mean 'tessellate'?" tesselate s.json
 expect_error "a transposition" "unknown subcommand 'fti'; did you mean 'fit'?" fti points.csv
 expect_error "a prefix" "unknown subcommand 'interp'; did you mean 'interpolate'?" interp points.csv
-expect_error "nothing near" "unknown subcommand 'bogus' (the subcommands: eval, plot, bernstein, gallery, convert, interpolate, fit, tessellate, length, closest, intersect, text, gcode, info)" bogus
+expect_error "nothing near" "unknown subcommand 'bogus' (the subcommands: eval, plot, bernstein, gallery, convert, interpolate, fit, tessellate, length, closest, intersect, text, gcode, info, arcs)" bogus
 expect_error "an unknown option of casteljau" "unknown option '--verison' for casteljau; did you mean '--version'?" --verison
 expect_error "an unknown option before the subcommand" "unknown option '--bogus' for casteljau (casteljau --help lists them)" \
   --bogus eval "$examples/notebook_polygon.csv" --at 0
-expect_error "no arguments at all" "a subcommand is required: eval, plot, bernstein, gallery, convert, interpolate, fit, tessellate, length, closest, intersect, text, gcode, info (casteljau --help says what each does)"
+expect_error "no arguments at all" "a subcommand is required: eval, plot, bernstein, gallery, convert, interpolate, fit, tessellate, length, closest, intersect, text, gcode, info, arcs (casteljau --help says what each does)"
 polygon="$examples/notebook_polygon.csv"
 expect_error "an option typo" "unknown option '--atx' for eval; did you mean '--at'?" eval "$polygon" --atx 0.5
 expect_error "a singular" "unknown option '--sample' for eval; did you mean '--samples'?" eval "$polygon" --sample 3

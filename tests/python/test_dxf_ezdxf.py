@@ -5,6 +5,9 @@
   sampled by ezdxf's own B-spline evaluator (which maps knots that do not
   start at 0 linearly to [0, 1]) equals casteljau's curve at the same parameters within 1e-12 of the
   size; read back by casteljau, the curves are the same doubles.
+- What `casteljau arcs --to dxf` writes ezdxf reads as LWPOLYLINE entities with
+  fit_arcs' vertices and bulges, and every arc it constructs from a bulge lies
+  within the tolerance of the drawing's curve.
 - What ezdxf writes (LINE, ARC, CIRCLE, ELLIPSE, LWPOLYLINE and POLYLINE with
   bulges, 3D POLYLINE, open, rational and closed periodic SPLINEs, in tilted
   planes too) casteljau reads: every point ezdxf puts on an entity (its own
@@ -101,6 +104,43 @@ def test_an_svg_letter_stays_upright_in_dxf(tmp_path):
 def on_curve(model, points, scale):
     """The largest distance of `points` from the curve, relative to `scale`."""
     return max(c.closest_point(model, np.asarray(p, dtype=float))[1] for p in points) / scale
+
+
+def test_ezdxf_reads_the_arcs_casteljau_writes(tmp_path):
+    """`casteljau arcs --to dxf`: LWPOLYLINE entities whose vertices and bulges
+    are fit_arcs' segments, closed where the curve closes; every arc as ezdxf
+    constructs it from its bulge (bulge_to_arc) within the tolerance of the
+    drawing's curve."""
+    tolerance = 0.01
+    source = EXAMPLES / "sailboat.svg"
+    out = tmp_path / "boat.dxf"
+    subprocess.run([CLI, "arcs", str(source), "--tolerance", str(tolerance), "-o", str(out)], check=True,
+                   stdout=subprocess.DEVNULL)
+    doc = ezdxf.readfile(out)
+    auditor = doc.audit()
+    assert not auditor.errors and not auditor.fixes, [e.message for e in auditor.errors + auditor.fixes]
+    polylines = list(doc.modelspace())
+    curves = c.read_models(source)
+    assert [e.dxftype() for e in polylines] == ["LWPOLYLINE"] * len(curves)
+    worst = 0.0
+    for polyline, curve in zip(polylines, curves):
+        segments = c.fit_arcs(curve, tolerance)["segments"]
+        closed = bool(np.array_equal(segments[0, 0:2], segments[-1, 2:4]))
+        assert polyline.closed == closed
+        vertices = polyline.get_points("xyb")
+        assert len(vertices) == len(segments) + (0 if closed else 1)
+        for k, (x0, y0, x1, y1, bulge) in enumerate(segments):
+            assert (vertices[k][0], vertices[k][1], vertices[k][2]) == (x0, y0, bulge)
+            if bulge == 0.0:
+                along = np.column_stack([np.linspace(x0, x1, 9), np.linspace(y0, y1, 9)])
+            else:
+                centre, a0, a1, radius = bulge_to_arc((x0, y0), (x1, y1), bulge)
+                sweep = (a1 - a0) % (2 * math.pi)
+                angles = a0 + np.linspace(0.0, sweep, 9)
+                along = np.column_stack([centre[0] + radius * np.cos(angles), centre[1] + radius * np.sin(angles)])
+            _, distances = c.closest_points(curve, along)
+            worst = max(worst, float(distances.max()))
+    assert worst <= tolerance * (1 + 1e-9), worst
 
 
 def test_casteljau_reads_what_ezdxf_writes(tmp_path):

@@ -1,6 +1,7 @@
 #pragma once
 // DXF drawings (ASCII, R12 to current) read into curves, and curves written
-// as DXF SPLINE entities. The curve entities are read exactly:
+// as DXF SPLINE entities (arc splines as LWPOLYLINE entities with bulges).
+// The curve entities are read exactly:
 //   LINE                                  a Bézier curve of degree 1
 //   ARC, CIRCLE, ELLIPSE (and its arcs)   rational quadratic B-splines (nurbs/conics.hpp's
 //                                         unit arcs mapped into the entity's plane)
@@ -25,6 +26,7 @@
 
 #include "casteljau/core/expected.hpp"
 #include "casteljau/io/model.hpp"
+#include "casteljau/ops/arc_spline.hpp"
 
 namespace casteljau {
 
@@ -82,5 +84,15 @@ Expected<DxfDrawing> read_dxf_drawing(const std::filesystem::path& path);
 /// ("curve 2 lives in R^4, DXF holds plane and space curves"), and those of
 /// to_bspline (pieces that do not meet).
 Expected<std::string> write_dxf_drawing(std::span<const Model> curves, int insunits = 0);
+
+/// The same document holding arc splines (ops/arc_spline.hpp's fit_arcs),
+/// each one LWPOLYLINE entity in the plane z = 0: a vertex (10, 20) at each
+/// segment's start with its bulge (42, omitted for a line: DXF's bulge is
+/// ArcSegment's, tan(sweep / 4), positive counterclockwise), then the last
+/// end, or, when the last end is the first start bit for bit, flag 70 = 1
+/// (closed) and no repeated vertex. Read back (read_dxf_drawing), each is
+/// the arc spline exactly: lines and rational arcs. Errors: a spline without
+/// segments, a number that is not finite.
+Expected<std::string> write_dxf_arc_polylines(std::span<const ArcSpline> splines, int insunits = 0);
 
 }  // namespace casteljau

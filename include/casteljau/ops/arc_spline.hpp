@@ -69,7 +69,8 @@ struct ArcSpline {
 /// count grows as O(tolerance^(-1/3)) and the greedy reach keeps it near the
 /// fewest. Consecutive elements on one circle (or one line) are joined and
 /// the join certified again: a circular arc of a NURBS conic becomes one
-/// arc, a whole circle two.
+/// arc, a whole circle two. An arc straight within rounding (sagitta at most
+/// tolerances::kArcStraightSagitta x the curve's size) is a segment.
 /// Errors: a curve that is not plane ("arc fitting needs a plane curve, this
 /// one lives in R^3"); a tolerance not finite and > 0, or below what double
 /// precision certifies (tolerances::kFlattenSmallestToleranceFactor x the

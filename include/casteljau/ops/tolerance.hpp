@@ -73,6 +73,22 @@ inline constexpr double kArcSameCircle = 1e-9;
 /// bulge, start and end being one point), so that a circle becomes two arcs.
 inline constexpr double kArcLargestSweep = 1.9 * 3.14159265358979323846;
 
+/// An arc whose sagitta is at most this fraction of the curve's size is
+/// written as the straight segment it is within rounding (bulge 0), when the
+/// sagitta fits in what the certificate leaves of the tolerance: a straight
+/// stretch fitted by a biarc comes out with bulges of 1e-15, whose centres
+/// 1e15 away no reader can place (ezdxf's bulge_to_arc put such an arc of the
+/// sailboat 0.49 mm off).
+inline constexpr double kArcStraightSagitta = 1e-12;
+
+// --- Many curves (ops/closest_among_curves, ops/intersections_among_curves) ---
+
+/// A curve's tight bounding box (ops/bounds) is widened by this fraction of
+/// its diagonal plus its largest |coordinate| before it prunes: its extremes
+/// are exact to rounding (about 1e-16 of those), and a box cut short could
+/// drop the nearest curve or a meeting.
+inline constexpr double kBoxRoundingMargin = 1e-9;
+
 // --- Intersections (ops/intersection) ----------------------------------------
 // Parameters are on [0, 1] per piece, or fractions of a curve's domain width.
 
