@@ -6,14 +6,17 @@
 // memory and written once every query is answered.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "casteljau/io/csv.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_file.hpp"
 #include "casteljau/io/model_json.hpp"
+#include "casteljau/ops/closest_among_curves.hpp"
 #include "casteljau/ops/closest_point.hpp"
 #include "casteljau/ops/point_inversion.hpp"
 #include "commands.hpp"
@@ -57,6 +60,56 @@ int run_surface(SurfaceView surface, const std::string& name, const std::vector<
   return write_output(output, out);
 }
 
+/// Several curves (a drawing's): for each query the nearest point of them
+/// all, CSV query,curve,t,distance,x,y[,z], `curve` the model's index (as
+/// --model takes it); with --all every local minimum of every curve, the
+/// global one first, then by curve and parameter.
+int run_curves(const std::vector<Model>& models, const ClosestOptions& options, const std::vector<double>& queries,
+               std::size_t dimension) {
+  std::vector<CurveView> curves;
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    const std::string name = model_name(models, m, options.model);
+    if (is_surface(models[m])) return fail(fmt::format("closest over several models takes curves; {} is a surface", name));
+    if (static_cast<std::size_t>(dimension_of(models[m])) != dimension)
+      return fail(fmt::format("the query points have {} coordinates, {} lives in R^{}", dimension, name,
+                              dimension_of(models[m])));
+    curves.push_back(curve_view(models[m]));
+  }
+  std::string out = "query,curve,t,distance";
+  for (std::size_t j = 0; j < dimension; ++j) out += j < 3 ? std::string(",") + "xyz"[j] : fmt::format(",x{}", j);
+  out += '\n';
+  const auto row = [&](std::size_t query, std::size_t curve, const NearestPoint& nearest) {
+    std::vector<double> values{static_cast<double>(query), static_cast<double>(curve), nearest.parameter,
+                               nearest.distance};
+    values.insert(values.end(), nearest.point.begin(), nearest.point.end());
+    append_points_csv(out, values, static_cast<int>(values.size()));
+  };
+  if (!options.all) {
+    auto answers = closest_among_curves(curves, queries);
+    if (!answers) return fail(answers.error());
+    for (std::size_t i = 0; i < answers->size(); ++i) row(i, (*answers)[i].curve, (*answers)[i].nearest);
+    return write_output(options.output, out);
+  }
+  for (std::size_t i = 0; i * dimension < queries.size(); ++i) {
+    std::vector<NearestAmongCurves> minima;
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+      auto local = local_closest_points(curves[c], std::span<const double>(queries).subspan(i * dimension, dimension));
+      if (!local) return fail(with_context(local.error(), fmt::format("query {}, {}", i, model_name(models, c, options.model))));
+      for (NearestPoint& nearest : *local) minima.push_back(NearestAmongCurves{c, std::move(nearest)});
+    }
+    // The global minimum first (the first curve's where two are as near), then by curve and parameter.
+    const auto global = std::min_element(minima.begin(), minima.end(), [](const auto& x, const auto& y) {
+      return x.nearest.distance < y.nearest.distance;
+    });
+    if (global != minima.end()) std::rotate(minima.begin(), global, global + 1);
+    std::sort(minima.begin() + (minima.empty() ? 0 : 1), minima.end(), [](const auto& x, const auto& y) {
+      return std::pair{x.curve, x.nearest.parameter} < std::pair{y.curve, y.nearest.parameter};
+    });
+    for (const NearestAmongCurves& m : minima) row(i, m.curve, m.nearest);
+  }
+  return write_output(options.output, out);
+}
+
 int run_closest(const ClosestOptions& options) {
   std::vector<double> queries;
   std::size_t dimension = 0;
@@ -82,8 +135,7 @@ int run_closest(const ClosestOptions& options) {
   if (queries.empty()) return fail("closest needs query points: --point X,Y[,Z] or --points FILE.csv");
   const auto models = read_model_file(options.model, options.units);
   if (!models) return fail(models.error());
-  if (models->size() != 1)
-    return fail(fmt::format("closest takes one curve; '{}' holds {} models", options.model, models->size()));
+  if (models->size() > 1) return run_curves(*models, options, queries, dimension);
   const Model& model = models->front();
   const std::string name = model_name(*models, 0, options.model);
   if (is_surface(model) && options.all)
@@ -124,11 +176,13 @@ void add_closest_command(CLI::App& app, int& status) {
       "For each query point, the nearest point of the curve in MODEL, as CSV query,t,distance,x,y[,z]: the global "
       "minimum of the distance over the whole domain, end points and knots included; with --all every local "
       "minimum, the global one first. On a surface, point inversion: query,u,v,distance,x,y,z. Queries: each "
-      "--point, then the rows of --points, numbered from 0 (docs/curves.md).");
+      "--point, then the rows of --points, numbered from 0 (docs/curves.md). A file of several curves (a drawing): "
+      "the nearest point of them all, as query,curve,t,distance,x,y[,z], curve the model's index as --model takes it.");
   CLI::Option* model =
       closest->add_option("MODEL", options->model,
-                          "Model JSON with one curve or surface, a CSV point set taken as one Bézier curve, or an SVG "
-                          "drawing with one subpath")
+                          "Model JSON with one curve or surface, a CSV point set taken as one Bézier curve, or a "
+                          "drawing (SVG, DXF) or model file of several curves: the nearest of them all, its index in "
+                          "the column curve")
           ->required();
   add_units_option(closest, options->units);
   closest->add_option("--point", options->points, "A query point X,Y[,Z] (repeatable)")->type_name("X,Y[,Z]");

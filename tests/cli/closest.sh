@@ -58,7 +58,17 @@ PY
 expect_error "--all on a surface" "--all (every local minimum) is for curves; the bspline_surface model in" \
   closest "$examples/sphere.json" --point 0,0,5 --all
 model two.json '{"models": [{"type": "bezier", "control_points": [[0,0],[3,4]]}, {"type": "bezier", "control_points": [[0,0],[1,0]]}]}'
-expect_error "two models" "closest takes one curve; '$work/two.json' holds 2 models" closest "$work/two.json" --point 0,0
+# Two curves: the nearest of both, its index in the column curve. (4, 1) is
+# 2.6 from the first segment, (0, 0)-(3, 4), at t = 0.64 (the foot (1.92,
+# 2.56)), and sqrt(10) from the second's end (1, 0); (0.5, -2) is 2 from
+# the second at t = 0.5, sqrt(4.25) from the first's start.
+check "two models" $'query,curve,t,distance,x,y\n0,0,0.64,2.6,1.92,2.56\n1,1,0.5,2,0.5,0' \
+  closest "$work/two.json" --point 4,1 --point 0.5,-2
+# --all: every local minimum of both, the global first, then by curve and parameter.
+check "two models, --all" $'query,curve,t,distance,x,y\n0,1,0.5,2,0.5,0\n0,0,0,2.0615528128088303,0,0' \
+  closest "$work/two.json" --point 0.5,-2 --all
+model mixed.json '{"models": [{"type": "bezier", "control_points": [[0,0],[3,4]]}, {"type": "bezier", "control_points": [[0,0,0],[1,0,0]]}]}'
+expect_error "two spaces" "the query points have 2 coordinates, models[1] (bezier) in" closest "$work/mixed.json" --point 0,0
 expect_error "missing file" "nothing.json" closest "$work/nothing.json" --point 0,0
 
 finish closest

@@ -52,7 +52,12 @@ expect_error "a 1D curve" "intersections need curves in R^2 or more, the first l
 expect_error "a surface" "intersect takes curves; the bezier_surface model in" intersect "$examples/patch.json"
 expect_error "bad tolerance" "--tolerance: 0 is not > 0" intersect "$work/a.json" "$work/b.json" --tolerance 0
 model two.json '{"models": [{"type": "bezier", "control_points": [[0,0],[3,4]]}, {"type": "bezier", "control_points": [[0,0],[1,0]]}]}'
-expect_error "two models" "intersect takes one curve per file; '$work/two.json' holds 2 models" intersect "$work/two.json"
+# A alone with two curves: they meet at their common start (0, 0).
+check "two models" \
+  "$(printf '{"intersections": [\n  {"kind": "transversal", "curve_a": 0, "curve_b": 1, "a": 0, "b": 0, "point": [0, 0]}\n]}')" \
+  intersect "$work/two.json"
+expect_error "two models and B" "intersect A B takes one curve per file; '$work/two.json' holds 2 models" \
+  intersect "$work/two.json" "$work/a.json"
 expect_error "missing file" "nothing.json" intersect "$work/a.json" "$work/nothing.json"
 
 finish intersect

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # casteljau on SVG drawings: every MODEL-taking command reads them (one curve
-# per subpath, y down, the root's user units or --units mm), convert --to svg
+# per subpath, upright, the root's user units or --units mm), convert --to svg
 # writes them (exact for lines, quadratics and cubics: the same doubles read
 # back; other pieces as cubics within --tolerance, stated), and bad drawings
 # (malformed XML, path data in error, --units on a file without units) are
@@ -22,8 +22,24 @@ model one.svg '<svg width="10mm" height="10mm" viewBox="0 0 20 20"><line x1="0" 
 # In mm, from (0, 10) to (4, 7): the page is 10 mm high.
 check "closest on a drawing with one subpath" $'query,t,distance,x,y\n0,0.5,0,2,8.5' \
   closest "$work/one.svg" --units mm --point 2,8.5
-# closest takes one curve: the drawing has two.
-expect_error "closest on two curves" "square.svg" closest "$work/square.svg" --point 0,0
+# Several curves: the nearest of them all and its curve. (3, 10) is 4 below
+# the square's lower side (y = 14, its third piece: t = 2.5 at (3, 14)) and
+# 6.2 from the line (0, 20) - (8, 14).
+check "closest on two curves" $'query,curve,t,distance,x,y\n0,0,2.5,4,3,14' closest "$work/square.svg" --point 3,10
+# Among the drawing's curves: the line y = 20 - 3x/4 enters the square
+# through its upper side (y = 18) at x = 8/3 and leaves through its right
+# side (x = 5) at y = 16.25.
+"$casteljau" intersect "$work/square.svg" >"$work/among.json" || { echo "FAIL: intersect among"; failures=$((failures + 1)); }
+/usr/bin/python3 - "$work/among.json" <<'EOF2' || { echo "FAIL: intersections among the drawing's curves: $(cat "$work/among.json")"; failures=$((failures + 1)); }
+import json, sys
+found = json.load(open(sys.argv[1]))["intersections"]
+expected = [(0, 1, (8 / 3 - 1) / 4, 1 / 3, (8 / 3, 18)), (0, 1, 1 + 1.75 / 4, 5 / 8, (5, 16.25))]
+assert len(found) == 2, found
+for x, (ca, cb, a, b, point) in zip(found, expected):
+    assert x["kind"] == "transversal" and (x["curve_a"], x["curve_b"]) == (ca, cb), x
+    assert abs(x["a"] - a) < 1e-12 and abs(x["b"] - b) < 1e-12, x
+    assert max(abs(p - q) for p, q in zip(x["point"], point)) < 1e-12, x
+EOF2
 check "--units user is the default" $'16\n10' length "$work/square.svg" --units user
 expect_error "--units cm" "--units: 'cm' is not user or mm" length "$work/square.svg" --units cm
 model line.json '{"type": "bezier", "control_points": [[0,0],[1,1]]}'
