@@ -111,6 +111,38 @@ TEST(Intersections, FindOverlapsInBothDirections) {
   EXPECT_EQ(whole[0].b.upper, 2.0);
 }
 
+TEST(Intersections, AnOverlapThatBeginsAtASmoothJointIsReportedOnce) {
+  // examples/sailboat.svg: the mast (x = 115 from y = 40 to 120) and the
+  // flag, a skewed rounded rectangle whose corner, a quadratic, arrives
+  // tangent to x = 115 at y = 115.27..., then its side runs along x = 115. The meeting at the joint is
+  // where the overlap begins, not a crossing of its own: it was reported as
+  // one too, 1.3e-7 from the overlap's start (1.6e-9 and 4.5e-8 off in the
+  // parameters).
+  const double y0 = 115.27025409136847;
+  const std::vector<double> corner{1, 0.7071067811865476, 1};  // exact quarter ellipses, skewed
+  const PiecewiseBezierCurve flag =
+      PiecewiseBezierCurve::make(
+          {bezier({{117, 121.98917242196369}, {129, 120.302682405535}}),
+           bezier({{129, 120.302682405535}, {131, 120.02160073613021}, {131, 118.02160073613021}}, corner),
+           bezier({{131, 118.02160073613021}, {131, 113.02160073613021}}),
+           bezier({{131, 113.02160073613021}, {131, 111.02160073613021}, {129, 111.302682405535}}, corner),
+           bezier({{129, 111.302682405535}, {117, 112.98917242196369}}),
+           bezier({{117, 112.98917242196369}, {115, 113.27025409136847}, {115, y0}}, corner),
+           bezier({{115, y0}, {115, 120.27025409136847}}),
+           bezier({{115, 120.27025409136847}, {115, 122.27025409136847}, {117, 121.98917242196369}}, corner)})
+          .value();
+  const BezierCurve mast = bezier({{115, 40}, {115, 120}});
+  for (const auto& found : {between(mast, flag), between(flag, mast)}) {
+    ASSERT_EQ(found.size(), 1u) << (found.size() > 1 ? kind_name(found[0].kind) : "");
+    EXPECT_EQ(found[0].kind, IntersectionKind::overlap);
+  }
+  const auto along = between(mast, flag);
+  EXPECT_NEAR(along[0].a.lower, (y0 - 40) / 80, 1e-12);
+  EXPECT_EQ(along[0].a.upper, 1.0);
+  EXPECT_NEAR(along[0].b.lower, 6.0, 1e-12);
+  EXPECT_NEAR(along[0].b.upper, 6 + (120 - y0) / 5, 1e-12);
+}
+
 TEST(Intersections, ReportEndsAndKnotsOnce) {
   const auto ends = between(bezier({{0, 0}, {1, 1}}), bezier({{1, 1}, {2, 0}}));
   ASSERT_EQ(ends.size(), 1u);
