@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <iterator>
 #include <utility>
 
 #include "casteljau/bezier/bernstein.hpp"
@@ -206,8 +207,20 @@ std::vector<double> bernstein_product(std::span<const double> p, std::span<const
   assert(!p.empty() && !q.empty());
   const int m = static_cast<int>(p.size()) - 1, n = static_cast<int>(q.size()) - 1;
   std::vector<double> c(static_cast<std::size_t>(m + n + 1), 0.0);
-  for (int i = 0; i <= m; ++i)
-    for (int j = 0; j <= n; ++j) c[i + j] += binomial(m, i) * binomial(n, j) * p[i] * q[j];
+  // The binomials of q's row once, on the stack for the usual degrees (the
+  // same products, in the same order, as one lookup per term).
+  double small[32];
+  std::vector<double> large;
+  double* row = small;
+  if (q.size() > std::size(small)) {
+    large.resize(q.size());
+    row = large.data();
+  }
+  for (int j = 0; j <= n; ++j) row[j] = binomial(n, j);
+  for (int i = 0; i <= m; ++i) {
+    const double left = binomial(m, i);
+    for (int j = 0; j <= n; ++j) c[i + j] += left * row[j] * p[i] * q[j];
+  }
   for (int k = 0; k <= m + n; ++k) c[k] /= binomial(m + n, k);
   return c;
 }

@@ -99,14 +99,28 @@ namespace {
 /// exponent, no "-0.0000"; rounded() is the double the controller reads.
 class Numbers {
  public:
-  explicit Numbers(int decimals) : decimals_(decimals), unit_(std::pow(10.0, -decimals)) {}
+  explicit Numbers(int decimals)
+      : decimals_(decimals), unit_(std::pow(10.0, -decimals)), scale_(std::pow(10.0, decimals)) {}
 
   std::string text(double x) const {
     std::string out = fmt::format("{:.{}f}", x, decimals_);
     if (out.front() == '-' && out.find_first_not_of("-0.") == std::string::npos) out.erase(0, 1);
     return out;
   }
-  double rounded(double x) const { return std::strtod(text(x).c_str(), nullptr); }
+  /// What the controller reads for text(x): k / 10^d for the integer k
+  /// nearest x 10^d (a quotient of two exact doubles, rounded once, as
+  /// strtod rounds the decimal text), taken from the rounded product unless
+  /// that lies within a few ulps of a tie, where only the text's exact
+  /// decimal rounding decides. The same doubles as strtod(text(x)), without
+  /// formatting: the centre search rounds 18 numbers an arc.
+  double rounded(double x) const {
+    const double scaled = x * scale_;
+    const double whole = std::nearbyint(scaled);
+    const double ulp = std::nextafter(std::abs(scaled), INFINITY) - std::abs(scaled);
+    if (std::abs(scaled) < 0x1p52 && std::abs(std::abs(scaled - whole) - 0.5) > 8.0 * ulp)
+      return whole == 0.0 ? 0.0 : whole / scale_;
+    return std::strtod(text(x).c_str(), nullptr);
+  }
   Vec2 rounded(Vec2 p) const { return {{rounded(p[0]), rounded(p[1])}}; }
   /// The value of the last decimal: 1e-4 for 4 decimals.
   double unit() const { return unit_; }
@@ -114,6 +128,7 @@ class Numbers {
  private:
   int decimals_;
   double unit_;
+  double scale_;  // 10^decimals, exact
 };
 
 const char* unit_name(GcodeUnits units) { return units == GcodeUnits::millimetres ? "mm" : "inch"; }
