@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,10 +24,12 @@
 #include "casteljau/ops/arc_length.hpp"
 #include "casteljau/ops/arc_spline.hpp"
 #include "casteljau/ops/bounds.hpp"
+#include "casteljau/ops/closest_among_curves.hpp"
 #include "casteljau/ops/closest_point.hpp"
 #include "casteljau/ops/curvature_extrema.hpp"
 #include "casteljau/ops/inflections.hpp"
 #include "casteljau/ops/intersection.hpp"
+#include "casteljau/ops/intersections_among_curves.hpp"
 #include "casteljau/ops/flatten.hpp"
 #include "casteljau/ops/mesh.hpp"
 #include "casteljau/ops/point_inversion.hpp"
@@ -413,6 +416,52 @@ void bind_ops(py::module_& module) {
       "'a': (a0, a1), 'b': (b(a0), b(a1))} for shared stretches (ops/intersection.hpp). tolerance: the distance "
       "within which the curves meet (default 1e-9 of the larger size). ValueError for curves of two dimensions "
       "or in R^1.");
+  module.def(
+      "closest_among_curves",
+      [](const py::sequence& curves, const py::object& points) {
+        std::vector<CurveView> views;
+        for (std::size_t k = 0; k < curves.size(); ++k)
+          views.push_back(curve_of(curves[k], fmt::format("curves[{}]", k).c_str()));
+        const PointArray queries = points_from(points, "points");
+        const auto answers = unwrap(without_gil([&] { return closest_among_curves(views, queries.coordinates()); }));
+        py::array_t<std::int64_t> which(static_cast<py::ssize_t>(answers.size()));
+        std::vector<double> parameters, distances;
+        for (std::size_t i = 0; i < answers.size(); ++i) {
+          which.mutable_data()[i] = static_cast<std::int64_t>(answers[i].curve);
+          parameters.push_back(answers[i].nearest.parameter);
+          distances.push_back(answers[i].nearest.distance);
+        }
+        return py::make_tuple(which, to_numpy(std::span<const double>(parameters)),
+                              to_numpy(std::span<const double>(distances)));
+      },
+      py::arg("curves"), py::arg("points"),
+      "For each row of `points` (n, d), the nearest point of all the curves (a drawing's), as (curve indices (n,), "
+      "parameters (n,) on those curves, distances (n,)); the lowest index where two curves are as near. Curves "
+      "are measured nearest bounding box first (ops/closest_among_curves.hpp). ValueError for curves of different "
+      "dimensions, points of another, or none. The GIL is released.");
+  module.def(
+      "intersections_among_curves",
+      [](const py::sequence& curves, const py::object& tolerance) {
+        std::vector<CurveView> views;
+        for (std::size_t k = 0; k < curves.size(); ++k)
+          views.push_back(curve_of(curves[k], fmt::format("curves[{}]", k).c_str()));
+        const std::optional<Tolerance> given =
+            tolerance.is_none() ? std::nullopt : std::optional{tolerance_from(tolerance.cast<double>(), "tolerance")};
+        auto found = unwrap(without_gil([&] { return intersections_among_curves(views, given); }));
+        std::vector<CurveIntersection> intersections;
+        for (const IntersectionAmongCurves& x : found) intersections.push_back(x.intersection);
+        py::list result = intersection_list(intersections);
+        for (std::size_t i = 0; i < found.size(); ++i) {
+          result[i]["curve_a"] = found[i].a;
+          result[i]["curve_b"] = found[i].b;
+        }
+        return result;
+      },
+      py::arg("curves"), py::arg("tolerance") = py::none(),
+      "Every intersection among the curves (a drawing's) and of each with itself, as intersections() reports "
+      "them with 'curve_a' <= 'curve_b' (their indices; equal for a self-intersection), sorted by curve_a, "
+      "curve_b and the parameter on curve_a. tolerance: the same for every pair, or each pair's default (1e-9 of "
+      "the larger size). A sweep over the curves' boxes picks the pairs (ops/intersections_among_curves.hpp).");
   module.def(
       "self_intersections",
       [](const py::object& curve, const py::object& tolerance) {

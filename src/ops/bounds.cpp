@@ -8,6 +8,7 @@
 #include "casteljau/bezier/bernstein_roots.hpp"
 #include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "bernstein_columns.hpp"
 
 namespace casteljau {
@@ -49,6 +50,21 @@ Box bounding_box(CurveView curve) {
     if (piece.degree() < 2) continue;  // a segment or a point: its ends bound it
     for (int j = 0; j < d; ++j)
       for (const double t : stationary_parameters(piece, j)) add(point_at(piece, t));
+  }
+  return box;
+}
+
+Box pruning_box(CurveView curve, double margin) {
+  Box box = bounding_box(curve);
+  double extent = 0.0, reach = 0.0;
+  for (std::size_t j = 0; j < box.lower.size(); ++j) {
+    extent += (box.upper[j] - box.lower[j]) * (box.upper[j] - box.lower[j]);
+    reach = std::max({reach, std::abs(box.lower[j]), std::abs(box.upper[j])});
+  }
+  const double widened = margin + tolerances::kBoxRoundingMargin * (std::sqrt(extent) + reach);
+  for (std::size_t j = 0; j < box.lower.size(); ++j) {
+    box.lower[j] -= widened;
+    box.upper[j] += widened;
   }
   return box;
 }

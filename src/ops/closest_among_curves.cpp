@@ -9,7 +9,6 @@
 #include <string>
 
 #include "casteljau/ops/bounds.hpp"
-#include "casteljau/ops/tolerance.hpp"
 
 namespace casteljau {
 namespace {
@@ -40,21 +39,7 @@ Expected<std::vector<NearestAmongCurves>> closest_among_curves(std::span<const C
     return Error{std::to_string(queries.size()) + " query coordinates are not whole points of R^" + std::to_string(d)};
   std::vector<Box> boxes;
   boxes.reserve(curves.size());
-  for (const CurveView& curve : curves) {
-    // The tight box, widened by what the rounding of its extremes may have cut off.
-    Box box = bounding_box(curve);
-    double extent = 0.0, reach = 0.0;
-    for (std::size_t j = 0; j < d; ++j) {
-      extent += (box.upper[j] - box.lower[j]) * (box.upper[j] - box.lower[j]);
-      reach = std::max({reach, std::abs(box.lower[j]), std::abs(box.upper[j])});
-    }
-    const double margin = tolerances::kBoxRoundingMargin * (std::sqrt(extent) + reach);
-    for (std::size_t j = 0; j < d; ++j) {
-      box.lower[j] -= margin;
-      box.upper[j] += margin;
-    }
-    boxes.push_back(std::move(box));
-  }
+  for (const CurveView& curve : curves) boxes.push_back(pruning_box(curve, 0.0));
 
   std::vector<NearestAmongCurves> answers;
   std::vector<std::pair<double, std::size_t>> order(curves.size());

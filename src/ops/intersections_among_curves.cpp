@@ -9,7 +9,6 @@
 #include <tuple>
 
 #include "casteljau/ops/bounds.hpp"
-#include "casteljau/ops/tolerance.hpp"
 
 namespace casteljau {
 
@@ -30,24 +29,12 @@ Expected<std::vector<IntersectionAmongCurves>> intersections_among_curves(std::s
     return Error{"the intersection tolerance must be a finite distance > 0"};
 
   // Each box widened by the distance within which its curve meets another
-  // (the pair's default is the larger of the two curves' own) and by the rounding of its extremes.
+  // (the pair's default is the larger of the two curves' own).
   std::vector<Box> boxes;
   boxes.reserve(curves.size());
-  for (const CurveView& curve : curves) {
-    Box box = bounding_box(curve);
-    double extent = 0.0, reach = 0.0;
-    for (std::size_t j = 0; j < d; ++j) {
-      extent += (box.upper[j] - box.lower[j]) * (box.upper[j] - box.lower[j]);
-      reach = std::max({reach, std::abs(box.lower[j]), std::abs(box.upper[j])});
-    }
-    const double meet = tolerance ? tolerance->distance : default_intersection_tolerance(curve, curve).distance;
-    const double margin = meet + tolerances::kBoxRoundingMargin * (std::sqrt(extent) + reach);
-    for (std::size_t j = 0; j < d; ++j) {
-      box.lower[j] -= margin;
-      box.upper[j] += margin;
-    }
-    boxes.push_back(std::move(box));
-  }
+  for (const CurveView& curve : curves)
+    boxes.push_back(
+        pruning_box(curve, tolerance ? tolerance->distance : default_intersection_tolerance(curve, curve).distance));
 
   const auto add = [&](std::size_t a, std::size_t b, Expected<std::vector<CurveIntersection>> result) -> Status {
     if (!result)

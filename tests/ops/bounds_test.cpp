@@ -16,6 +16,7 @@
 #include "casteljau/bspline/bezier_pieces.hpp"
 #include "casteljau/bspline/bspline_curve.hpp"
 #include "casteljau/nurbs/conics.hpp"
+#include "casteljau/ops/tolerance.hpp"
 #include "support/bspline_generators.hpp"
 #include "support/generators.hpp"
 
@@ -85,6 +86,30 @@ RC_GTEST_PROP(BoundingBox, HoldsTheSamplesAndTouchesEveryFaceOnBezierCurves, ())
 RC_GTEST_PROP(BoundingBox, HoldsTheSamplesAndTouchesEveryFaceOnBSplines, ()) {
   const BSplineCurve curve = *test::bspline_curve({.max_degree = 4});
   check_against_samples(curve);
+}
+
+}  // namespace
+}  // namespace casteljau
+
+namespace casteljau {
+namespace {
+
+TEST(PruningBox, TheTightBoxWidenedByTheMarginAndTheRounding) {
+  // The unit circle about (3, 4): tight box [2, 4] x [3, 5], diagonal 2 sqrt 2,
+  // largest |coordinate| 5; widened by 0.5 and by 1e-9 (2 sqrt 2 + 5).
+  const BSplineCurve circle = make_circle(3.0, 4.0, 1.0).value();
+  const Box box = pruning_box(circle, 0.5);
+  const double rounding = tolerances::kBoxRoundingMargin * (2.0 * std::sqrt(2.0) + 5.0);
+  EXPECT_NEAR(box.lower[0], 2.0 - 0.5 - rounding, 1e-15);
+  EXPECT_NEAR(box.upper[0], 4.0 + 0.5 + rounding, 1e-15);
+  EXPECT_NEAR(box.lower[1], 3.0 - 0.5 - rounding, 1e-15);
+  EXPECT_NEAR(box.upper[1], 5.0 + 0.5 + rounding, 1e-15);
+  // With no margin, still strictly around the tight box.
+  const Box tight = bounding_box(circle), pruning = pruning_box(circle, 0.0);
+  for (std::size_t j = 0; j < 2; ++j) {
+    EXPECT_LT(pruning.lower[j], tight.lower[j]);
+    EXPECT_GT(pruning.upper[j], tight.upper[j]);
+  }
 }
 
 }  // namespace

@@ -24,4 +24,11 @@ struct Box {
 /// which changes the coordinate by far less). O(pieces x d x n^2 log).
 Box bounding_box(CurveView curve);
 
+/// bounding_box widened on every side by `margin` and by what rounding may
+/// have cut off its extremes (tolerances::kBoxRoundingMargin x its diagonal
+/// plus its largest |coordinate|): a box no point of the curve, nor any
+/// point within `margin` of it, lies outside, for pruning (closest points
+/// and intersections among many curves).
+Box pruning_box(CurveView curve, double margin);
+
 }  // namespace casteljau
