@@ -2,7 +2,8 @@
 // of --points FILE.csv), the nearest point of the curve of MODEL, as CSV
 // query,t,distance,x,y[,z]; with --all every local minimum of the distance,
 // the global one first; of a surface, query,u,v,distance,x,y,z (point
-// inversion) (docs/cli.md, "closest"). The output is built in
+// inversion); of a file of several curves (a drawing), the nearest of them
+// all, query,curve,t,distance,x,y[,z] (docs/cli.md, "closest"). The output is built in
 // memory and written once every query is answered.
 #include <fmt/format.h>
 

@@ -1,7 +1,8 @@
 // casteljau intersect: the intersections of the curves of A and B (or the
-// self-intersections of A alone) as JSON, {"intersections": [...]}, one
-// object per intersection sorted by a (docs/cli.md, "intersect"; the format
-// is ../shared/docs/interfaces.md's). Numbers are written in the shortest
+// self-intersections of A alone; for A alone holding several curves, every
+// intersection among them, each naming curve_a and curve_b) as JSON,
+// {"intersections": [...]}, one object per intersection sorted by a
+// (docs/cli.md, "intersect"; the format is ../shared/docs/interfaces.md's). Numbers are written in the shortest
 // text that reads back to the same double.
 #include <fmt/format.h>
 
