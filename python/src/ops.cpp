@@ -189,6 +189,15 @@ CurveView curve_of(const py::handle& object, const char* what) {
                                    std::string(py::str(py::type::of(object).attr("__name__")))));
 }
 
+/// A list of curve objects as views (the objects must outlive them);
+/// TypeError naming curves[k] for one that is not a curve.
+std::vector<CurveView> curves_of(const py::sequence& curves) {
+  std::vector<CurveView> views;
+  for (std::size_t k = 0; k < curves.size(); ++k)
+    views.push_back(curve_of(curves[k], fmt::format("curves[{}]", k).c_str()));
+  return views;
+}
+
 /// The intersections as a list of dicts shaped like the CLI's JSON.
 py::list intersection_list(const std::vector<CurveIntersection>& found) {
   py::list result;
@@ -419,9 +428,7 @@ void bind_ops(py::module_& module) {
   module.def(
       "closest_among_curves",
       [](const py::sequence& curves, const py::object& points) {
-        std::vector<CurveView> views;
-        for (std::size_t k = 0; k < curves.size(); ++k)
-          views.push_back(curve_of(curves[k], fmt::format("curves[{}]", k).c_str()));
+        const std::vector<CurveView> views = curves_of(curves);
         const PointArray queries = points_from(points, "points");
         const auto answers = unwrap(without_gil([&] { return closest_among_curves(views, queries.coordinates()); }));
         py::array_t<std::int64_t> which(static_cast<py::ssize_t>(answers.size()));
@@ -442,9 +449,7 @@ void bind_ops(py::module_& module) {
   module.def(
       "intersections_among_curves",
       [](const py::sequence& curves, const py::object& tolerance) {
-        std::vector<CurveView> views;
-        for (std::size_t k = 0; k < curves.size(); ++k)
-          views.push_back(curve_of(curves[k], fmt::format("curves[{}]", k).c_str()));
+        const std::vector<CurveView> views = curves_of(curves);
         const std::optional<Tolerance> given =
             tolerance.is_none() ? std::nullopt : std::optional{tolerance_from(tolerance.cast<double>(), "tolerance")};
         auto found = unwrap(without_gil([&] { return intersections_among_curves(views, given); }));
