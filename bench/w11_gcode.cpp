@@ -9,17 +9,17 @@
 // memory; items = bytes of SVG. The ordering rows time cutting_order alone
 // (k-d tree nearest neighbour, 2-opt on neighbour lists) on the fitted
 // contours, and, on the first eighth of them, greedy nearest neighbour by a
-// k-d tree beside the plain search the writer used before (every entry
-// point of every contour left, at every step: quadratic). Checks: one
+// k-d tree beside the plain search the writer used before
+// (tests/support/greedy_order_oracle.hpp: quadratic). Checks: one
 // contour per path, every contour cut once, the ordered rapid moves shorter
 // than the input's order, the indexed greedy order as long as the plain one.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,6 +29,7 @@
 #include "casteljau/io/gcode_order.hpp"
 #include "casteljau/io/model.hpp"
 #include "casteljau/io/model_file.hpp"
+#include "support/greedy_order_oracle.hpp"
 #include "support/splitmix.hpp"
 
 namespace {
@@ -158,51 +159,16 @@ void order(benchmark::State& state, const Drawing& drawing) {
   state.counters["rapid_m_ordered"] = after / 1000.0;
 }
 
-/// Greedy nearest neighbour the plain way (the writer's before the k-d
-/// tree): at every step, every way into every contour left. Its rapid length.
-double plain_greedy(std::span<const GcodeContour> contours) {
-  std::vector<char> done(contours.size(), 0);
-  Vec2 tool{};
-  double length = 0.0;
-  for (std::size_t step = 0; step < contours.size(); ++step) {
-    double best = std::numeric_limits<double>::infinity();
-    std::size_t chosen = 0;
-    Vec2 exit{};
-    for (std::size_t c = 0; c < contours.size(); ++c) {
-      if (done[c]) continue;
-      const GcodeContour& contour = contours[c];
-      const auto consider = [&](Vec2 in, Vec2 out) {
-        const double d = distance(tool, in);
-        if (d < best) {
-          best = d;
-          chosen = c;
-          exit = out;
-        }
-      };
-      if (contour_is_closed(contour, kTolerance)) {
-        for (const ArcSegment& s : contour) consider(s.start, s.start);
-      } else {
-        consider(contour.front().start, contour.back().end);
-        consider(contour.back().end, contour.front().start);
-      }
-    }
-    done[chosen] = 1;
-    length += best;
-    tool = exit;
-  }
-  return length;
-}
-
 void greedy(benchmark::State& state, const Drawing& drawing, bool indexed) {
   const std::vector<GcodeContour>& all = fitted_contours(drawing);
   const std::span<const GcodeContour> contours(all.data(), all.size() / 8);
   double length = 0.0;
   for (auto _ : state) {
     length = indexed ? rapid_length_of(nearest_neighbour_order(contours, kTolerance, 1), kTolerance, 1)
-                     : plain_greedy(contours);
+                     : test::plain_greedy_length(contours, kTolerance, 1);
     benchmark::DoNotOptimize(length);
   }
-  static const double plain = plain_greedy(contours);  // the reference, searched once
+  static const double plain = test::plain_greedy_length(contours, kTolerance, 1);  // the reference, searched once
   const double reference = indexed ? plain : length;
   if (contours.empty() || std::abs(length - reference) > 1e-9 * reference)
     state.SkipWithError(fmt::format("greedy rapid length {} where the plain search gives {}", length, reference).c_str());

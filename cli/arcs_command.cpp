@@ -7,8 +7,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,11 +56,7 @@ int run_arcs(const ArcsOptions& options) {
   if (!tolerance) return fail(tolerance.error());
   if (!(*tolerance > 0.0)) return fail(fmt::format("--tolerance: {} is not a distance > 0", options.tolerance));
   std::string to = options.to;
-  if (to.empty()) {
-    std::string extension = std::filesystem::path(options.output).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    to = extension == ".dxf" ? "dxf" : "json";
-  }
+  if (to.empty()) to = lowercase_extension(options.output) == ".dxf" ? "dxf" : "json";
   if (to != "json" && to != "dxf") return fail(fmt::format("--to: '{}' is not json or dxf", to.substr(0, 60)));
 
   const auto read = read_model_file_with_unit(options.model, options.units);

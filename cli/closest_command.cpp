@@ -35,9 +35,16 @@ struct ClosestOptions {
   const CLI::Option* points_file_option = nullptr;
 };
 
-/// One answer as a CSV row: query index, parameter, distance, the point.
-void append_row(std::string& out, std::size_t query, const NearestPoint& nearest) {
-  std::vector<double> row{static_cast<double>(query), nearest.parameter, nearest.distance};
+/// The CSV header: `leading` columns, then x, y, z (x3, x4, ... beyond).
+std::string header_of(std::string leading, std::size_t dimension) {
+  for (std::size_t j = 0; j < dimension; ++j) leading += j < 3 ? std::string(",") + "xyz"[j] : fmt::format(",x{}", j);
+  return leading + '\n';
+}
+
+/// One answer as a CSV row: the leading columns (the query's index, the
+/// curve's), parameter, distance, the point.
+void append_row(std::string& out, std::vector<double> row, const NearestPoint& nearest) {
+  row.insert(row.end(), {nearest.parameter, nearest.distance});
   row.insert(row.end(), nearest.point.begin(), nearest.point.end());
   append_points_csv(out, row, static_cast<int>(row.size()));
 }
@@ -48,9 +55,7 @@ int run_surface(SurfaceView surface, const std::string& name, const std::vector<
                 const std::string& output) {
   if (dimension != static_cast<std::size_t>(surface.dimension()))
     return fail(fmt::format("the query points have {} coordinates, {} lives in R^{}", dimension, name, surface.dimension()));
-  std::string out = "query,u,v,distance";
-  for (std::size_t j = 0; j < dimension; ++j) out += j < 3 ? std::string(",") + "xyz"[j] : fmt::format(",x{}", j);
-  out += '\n';
+  std::string out = header_of("query,u,v,distance", dimension);
   for (std::size_t i = 0; i * dimension < queries.size(); ++i) {
     auto nearest = closest_point(surface, std::span<const double>(queries).subspan(i * dimension, dimension));
     if (!nearest) return fail(with_context(nearest.error(), fmt::format("query {}", i)));
@@ -76,14 +81,9 @@ int run_curves(const std::vector<Model>& models, const ClosestOptions& options, 
                               dimension_of(models[m])));
     curves.push_back(curve_view(models[m]));
   }
-  std::string out = "query,curve,t,distance";
-  for (std::size_t j = 0; j < dimension; ++j) out += j < 3 ? std::string(",") + "xyz"[j] : fmt::format(",x{}", j);
-  out += '\n';
+  std::string out = header_of("query,curve,t,distance", dimension);
   const auto row = [&](std::size_t query, std::size_t curve, const NearestPoint& nearest) {
-    std::vector<double> values{static_cast<double>(query), static_cast<double>(curve), nearest.parameter,
-                               nearest.distance};
-    values.insert(values.end(), nearest.point.begin(), nearest.point.end());
-    append_points_csv(out, values, static_cast<int>(values.size()));
+    append_row(out, {static_cast<double>(query), static_cast<double>(curve)}, nearest);
   };
   if (!options.all) {
     auto answers = closest_among_curves(curves, queries);
@@ -147,14 +147,12 @@ int run_closest(const ClosestOptions& options) {
     return fail(fmt::format("the query points have {} coordinates, {} lives in R^{}", dimension, name,
                             curve.dimension()));
   const std::size_t count = queries.size() / dimension;
-  std::string out = "query,t,distance";
-  for (std::size_t j = 0; j < dimension; ++j) out += j < 3 ? std::string(",") + "xyz"[j] : fmt::format(",x{}", j);
-  out += '\n';
+  std::string out = header_of("query,t,distance", dimension);
   if (options.all) {
     for (std::size_t i = 0; i < count; ++i) {
       auto minima = local_closest_points(curve, std::span<const double>(queries).subspan(i * dimension, dimension));
       if (!minima) return fail(with_context(minima.error(), fmt::format("query {}", i)));
-      for (const NearestPoint& nearest : *minima) append_row(out, i, nearest);
+      for (const NearestPoint& nearest : *minima) append_row(out, {static_cast<double>(i)}, nearest);
     }
   } else {
     std::vector<double> parameters(count), distances(count);
@@ -162,7 +160,7 @@ int run_closest(const ClosestOptions& options) {
       return fail(status.error());
     for (std::size_t i = 0; i < count; ++i) {
       NearestPoint nearest{parameters[i], distances[i], point_at(curve, parameters[i])};
-      append_row(out, i, nearest);
+      append_row(out, {static_cast<double>(i)}, nearest);
     }
   }
   return write_output(options.output, out);

@@ -1,6 +1,6 @@
 // The cutting order (io/gcode_order.hpp). The reference for nearest
-// neighbour is the plain search written here (every way into every contour
-// left, at every step); 2-opt and the joints are checked by what they must
+// neighbour is the plain search (support/greedy_order_oracle.hpp: every way
+// into every contour left, at every step); 2-opt and the joints are checked by what they must
 // keep: every contour cut once, as the same segments, and the rapid moves
 // never longer (rapidcheck, integer coordinates for many ties), plus cases
 // worked by hand.
@@ -12,11 +12,12 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
-#include <limits>
 #include <random>
 #include <tuple>
 #include <utility>
 #include <vector>
+
+#include "support/greedy_order_oracle.hpp"
 
 namespace casteljau {
 namespace {
@@ -45,43 +46,6 @@ std::vector<GcodeContour> scattered_contours(std::size_t count, std::uint64_t se
     contours.push_back(contour);
   }
   return contours;
-}
-
-/// Nearest neighbour the plain way: at every step every way into every
-/// contour left; the rapid moves' length.
-double plain_greedy_length(const std::vector<GcodeContour>& contours, int passes) {
-  std::vector<bool> done(contours.size());
-  Vec2 tool{};
-  double length = 0.0;
-  for (std::size_t step = 0; step < contours.size(); ++step) {
-    double best = std::numeric_limits<double>::infinity();
-    Vec2 entry{}, exit{};
-    std::size_t chosen = 0;
-    for (std::size_t c = 0; c < contours.size(); ++c) {
-      if (done[c]) continue;
-      const GcodeContour& contour = contours[c];
-      const bool closed = distance(contour.front().start, contour.back().end) <= kOrderTolerance.distance;
-      const auto consider = [&](Vec2 in, Vec2 out) {
-        if (distance(tool, in) < best) {
-          best = distance(tool, in);
-          entry = in;
-          exit = out;
-          chosen = c;
-        }
-      };
-      if (closed) {
-        for (const ArcSegment& s : contour) consider(s.start, s.start);
-      } else {
-        consider(contour.front().start, passes % 2 == 0 ? contour.front().start : contour.back().end);
-        consider(contour.back().end, passes % 2 == 0 ? contour.back().end : contour.front().start);
-      }
-    }
-    done[chosen] = true;
-    length += best;
-    tool = exit;
-    static_cast<void>(entry);
-  }
-  return length;
 }
 
 /// A contour as a set of segments, whatever its rotation and direction.
@@ -121,7 +85,7 @@ TEST(GcodeOrder, NearestNeighbourIsThePlainGreedyOrder) {
     ASSERT_EQ(order.size(), contours.size());
     EXPECT_TRUE(same_contours(order, contours));
     EXPECT_TRUE(chains(order));
-    const double plain = plain_greedy_length(contours, passes);
+    const double plain = test::plain_greedy_length(contours, kOrderTolerance, passes);
     EXPECT_NEAR(rapid_length_of(order, kOrderTolerance, passes), plain, 1e-9 * plain) << passes << " passes";
   }
 }
