@@ -64,7 +64,7 @@ define report
 	fi
 endef
 
-.PHONY: all deps bench-deps build python asan wasm test check demo bench bench-publish clean
+.PHONY: all deps bench-deps build python asan wasm playground test check demo bench bench-playground bench-publish clean
 
 all: build
 
@@ -86,6 +86,7 @@ deps:
 	$(call install_missing,$(PACKAGES))
 	@[ -d tests/svg/node_modules/playwright-core ] || { cd tests/svg && npm ci --no-audit --no-fund --ignore-scripts; }
 	@[ -d tests/gcode/node_modules/gcode-toolpath ] || { cd tests/gcode && npm ci --no-audit --no-fund --ignore-scripts; }
+	@[ -d tests/playground/node_modules/playwright-core ] || { cd tests/playground && npm ci --no-audit --no-fund --ignore-scripts; }
 
 bench-deps: deps
 	$(call install_missing,$(BENCH_PACKAGES))
@@ -111,6 +112,14 @@ wasm: deps
 	$(call timed,configure build-wasm/,cmake --preset wasm $(CMAKE_FLAGS) >/dev/null)
 	$(call timed,build build-wasm/,cmake --build --preset wasm -j $(JOBS))
 
+# The web playground (issue 19): the core and its bindings (wasm/) built by
+# em++ in build-wasm/, with the page of playground/, copied to out/playground/.
+# It is one folder of static files that works from file:// (the WebAssembly
+# is embedded in casteljau.js): open out/playground/index.html.
+playground: wasm
+	rm -rf out/playground && mkdir -p out && cp -r build-wasm/playground out/playground
+	@echo "make playground: open out/playground/index.html ($$(du -sk out/playground | cut -f1) kB, $$(cat out/playground/casteljau.js out/playground/index.html out/playground/*.css out/playground/js/*.js out/playground/js/views/*.js | gzip -9 | wc -c) bytes gzip)"
+
 # The suites of the default tree: C++ (ctest; the Python suite, labelled
 # python, runs through pytest itself so that its summary shows) and pytest.
 # $(1): more labels for ctest to exclude (|slow).
@@ -126,10 +135,10 @@ test: test-start build asan wasm
 	$(call default_suites)
 	@echo "== C++ tests under AddressSanitizer + UBSan (build-asan/) =="
 	$(call timed,C++ tests build-asan/,cd build-asan && ctest --output-on-failure -j $(JOBS) -LE python)
-	@echo "== core library built with em++, run under node (build-wasm/) =="
+	@echo "== core library built with em++, run under node; the playground in Chromium (build-wasm/) =="
 	$(call timed,em++ tests build-wasm/,cd build-wasm && ctest --output-on-failure)
 	$(report)
-	@echo "make test: all test suites passed (C++, pytest, sanitizers, em++ core)"
+	@echo "make test: all test suites passed (C++, pytest, sanitizers, em++ core, playground)"
 
 # The inner loop: the default tree and its C++ and Python suites, without the
 # C++ tests labelled slow (over 10 s each); `make test` runs them all.
@@ -142,10 +151,18 @@ check: test-start build
 test-start:
 	$(ccache_start)
 
-demo: build
+# The gallery of seed figures, and the playground with a screenshot of each
+# of its views (taken in Chromium by tests/playground/page_test.mjs) linked
+# from the gallery's index.
+demo: build playground
 	rm -rf out/gallery.tmp && ./build/casteljau gallery out/gallery.tmp
+	mkdir -p out/gallery.tmp/playground
+	@if CASTELJAU_PLAYGROUND_SHOTS=$(CURDIR)/out/gallery.tmp/playground bash tests/playground/run.sh out/playground build/casteljau examples >out/playground-shots.log 2>&1; then \
+	  sed -i 's|</body>|<p><a href="playground/index.html">The web playground, view by view</a> (screenshots; the page itself: out/playground/index.html)</p>\n</body>|' out/gallery.tmp/index.html; \
+	else echo "make demo: no playground screenshots (Chromium's run: out/playground-shots.log)"; rm -rf out/gallery.tmp/playground; fi
 	rm -rf out/gallery && mv out/gallery.tmp out/gallery
-	@echo "make demo: gallery written to out/gallery/index.html ($$(ls out/gallery/*.svg | wc -l) SVG, $$(ls out/gallery/*.png | wc -l) PNG)"
+	@echo "make demo: gallery written to out/gallery/index.html ($$(ls out/gallery/*.svg | wc -l) SVG, $$(ls out/gallery/*.png | wc -l) PNG, $$(ls out/gallery/playground/*.png 2>/dev/null | wc -l) playground views)"
+	@echo "make demo: the playground is out/playground/index.html (open it in a browser; it works from file://)"
 
 # Builds build-bench/ and runs bench/run.sh: out/bench/results.json and
 # out/bench/RESULTS.md (the build time is reported there too).
@@ -154,6 +171,12 @@ bench: bench-deps
 	cmake --preset bench $(BENCH_CMAKE_FLAGS) >/dev/null && \
 	cmake --build --preset bench -j $(JOBS) && \
 	CASTELJAU_BENCH_BUILD_SECONDS=$$(( $$(date +%s) - started )) bash bench/run.sh
+
+# The playground's redraw time while dragging, measured in Chromium
+# (bench/playground_frames.mjs): out/bench/playground_frames.md.
+bench-playground: playground
+	mkdir -p out/bench
+	node bench/playground_frames.mjs out/playground out/bench/playground_frames.md
 
 # Publishes the last `make bench` run: out/bench/RESULTS.md becomes
 # docs/RESULTS.md and its summary the README's performance table.
