@@ -15,14 +15,15 @@ PACKAGES := cmake ninja-build g++ pkgconf libgtest-dev libgmock-dev libbenchmark
   libcairo2-dev poppler-utils emscripten python3-dev python3-numpy python3-scipy \
   python3-matplotlib python3-pytest python3-hypothesis python3-meshio \
   pybind11-dev python3-pybind11 chromium python3-ezdxf libocct-data-exchange-dev \
-  ccache python3-pytest-xdist linuxcnc-uspace
+  ccache python3-pytest-xdist linuxcnc-uspace clang-14 libclang-rt-14-dev
 # Checkers we did not write: chromium reads SVG in tests/svg/ (driven by npm's
 # playwright-core, installed into tests/svg/node_modules by deps); python3-ezdxf
 # reads and writes DXF in tests/python/test_dxf_ezdxf.py; OpenCASCADE
 # (libocct-data-exchange-dev) reads IGES and STEP in tests/exchange/;
 # LinuxCNC's interpreter (linuxcnc-uspace: /usr/bin/rs274) and npm's
 # gcode-toolpath (cncjs's, installed into tests/gcode/node_modules by deps)
-# read G-code in tests/gcode/.
+# read G-code in tests/gcode/. clang-14 and its runtime (libclang-rt-14-dev:
+# libFuzzer, ASan, UBSan) build the fuzz targets of tests/fuzz/.
 # Peers measured beside casteljau by `make bench`.
 BENCH_PACKAGES := libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
   libtbb-dev libsisl-dev lib2geom-dev libdouble-conversion-dev libgsl-dev libboost-dev \
@@ -64,7 +65,7 @@ define report
 	fi
 endef
 
-.PHONY: all deps bench-deps build python asan wasm playground test check demo bench bench-playground bench-publish clean
+.PHONY: all deps bench-deps build python asan wasm playground fuzz fuzz-build test check demo bench bench-playground bench-publish clean
 
 all: build
 
@@ -112,6 +113,21 @@ wasm: deps
 	$(call timed,configure build-wasm/,cmake --preset wasm $(CMAKE_FLAGS) >/dev/null)
 	$(call timed,build build-wasm/,cmake --build --preset wasm -j $(JOBS))
 
+# The libFuzzer targets (tests/fuzz/, docs/fuzzing.md): clang with ASan and
+# UBSan in build-fuzz/. `make test` runs each for a few seconds on its seeds;
+# `make fuzz` for FUZZ_SECONDS each (default 60), growing out/fuzz/corpus/
+# from run to run; what a fuzzer finds lands in out/fuzz/findings/NAME/.
+FUZZ_SECONDS ?= 60
+fuzz-build: deps
+	$(call timed,configure build-fuzz/,cmake --preset fuzz $(CMAKE_FLAGS) >/dev/null)
+	$(call timed,build build-fuzz/,cmake --build --preset fuzz -j $(JOBS))
+
+fuzz: fuzz-build
+	@set -o pipefail; for fuzzer in build-fuzz/tests/fuzz/*_fuzzer; do \
+	  name=$$(basename $$fuzzer _fuzzer); echo "== fuzz $$name ($(FUZZ_SECONDS) s)"; \
+	  bash tests/fuzz/run.sh $$fuzzer $$name $(FUZZ_SECONDS) $(CURDIR)/out/fuzz 2>&1 | grep -E '^stat::|^#[0-9]+ *DONE|ERROR|SUMMARY|artifact' || exit 1; \
+	done
+
 # The web playground (issue 19): the core and its bindings (wasm/) built by
 # em++ in build-wasm/, with the page of playground/, copied to out/playground/.
 # It is one folder of static files that works from file:// (the WebAssembly
@@ -131,14 +147,16 @@ define default_suites
 endef
 
 # Every test: what CI runs. `make check` is the inner loop.
-test: test-start build asan wasm
+test: test-start build asan wasm fuzz-build
 	$(call default_suites)
 	@echo "== C++ tests under AddressSanitizer + UBSan (build-asan/) =="
 	$(call timed,C++ tests build-asan/,cd build-asan && ctest --output-on-failure -j $(JOBS) -LE python)
 	@echo "== core library built with em++, run under node; the playground in Chromium (build-wasm/) =="
 	$(call timed,em++ tests build-wasm/,cd build-wasm && ctest --output-on-failure)
+	@echo "== fuzz targets, a few seconds each on their seeds (build-fuzz/) =="
+	$(call timed,fuzz smoke build-fuzz/,cd build-fuzz && ctest --output-on-failure -j $(JOBS))
 	$(report)
-	@echo "make test: all test suites passed (C++, pytest, sanitizers, em++ core, playground)"
+	@echo "make test: all test suites passed (C++, pytest, sanitizers, em++ core, playground, fuzz smoke)"
 
 # The inner loop: the default tree and its C++ and Python suites, without the
 # C++ tests labelled slow (over 10 s each); `make test` runs them all.
@@ -186,4 +204,4 @@ bench-publish:
 	$(PYTHON) bench/report.py readme --results docs/RESULTS.md --readme README.md
 
 clean:
-	rm -rf build build-asan build-wasm build-bench out
+	rm -rf build build-asan build-wasm build-fuzz build-bench out

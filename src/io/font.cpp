@@ -10,8 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -109,9 +111,11 @@ std::optional<PiecewiseBezierCurve> contour_curve(const FT_Outline& outline, int
   return PiecewiseBezierCurve::make(std::move(pieces)).value();
 }
 
-}  // namespace
-
-Expected<TextOutline> text_outline(std::string_view text, const std::filesystem::path& font, const TextLayout& layout) {
+/// The text set in the face `open` opens (FT_New_Face or FT_New_Memory_Face);
+/// `name` names the font in errors.
+template <class Open>
+Expected<TextOutline> outline_in_face(std::string_view text, const std::string& name, const TextLayout& layout,
+                                      Open open) {
   if (layout.size && !(std::isfinite(*layout.size) && *layout.size > 0.0))
     return Error{fmt::format("the size must be a finite length > 0, got {}", *layout.size)};
   auto characters = io_detail::code_points(text);
@@ -121,15 +125,15 @@ Expected<TextOutline> text_outline(std::string_view text, const std::filesystem:
     return Error{fmt::format("FreeType cannot start: {}", freetype_message(error)), ErrorKind::io};
   const Library library(raw_library);
   FT_Face raw_face = nullptr;
-  if (FT_Error error = FT_New_Face(library.get(), font.c_str(), 0, &raw_face); error != 0) {
+  if (FT_Error error = open(library.get(), &raw_face); error != 0) {
     if (error == FT_Err_Cannot_Open_Resource)
-      return Error{fmt::format("cannot open the font '{}'", font.string()), ErrorKind::io};
-    return Error{fmt::format("'{}' is not a font FreeType reads: {}", font.string(), freetype_message(error)),
+      return Error{fmt::format("cannot open the font '{}'", name), ErrorKind::io};
+    return Error{fmt::format("'{}' is not a font FreeType reads: {}", name, freetype_message(error)),
                  ErrorKind::parse};
   }
   const Face face(raw_face);
   if (!FT_IS_SCALABLE(face.get()))
-    return Error{fmt::format("'{}' is a bitmap font: it has no outlines", font.string())};
+    return Error{fmt::format("'{}' is a bitmap font: it has no outlines", name)};
   TextOutline result;
   result.units_per_em = face->units_per_EM;
   result.font_name = fmt::format("{} {}", face->family_name ? face->family_name : "",
@@ -156,7 +160,7 @@ Expected<TextOutline> text_outline(std::string_view text, const std::filesystem:
     }
     if (FT_Error error = FT_Load_Glyph(face.get(), glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP);
         error != 0)
-      return Error{fmt::format("'{}': glyph {} (for U+{:04X}) cannot be loaded: {}", font.string(), glyph,
+      return Error{fmt::format("'{}': glyph {} (for U+{:04X}) cannot be loaded: {}", name, glyph,
                                static_cast<unsigned>(character), freetype_message(error)),
                    ErrorKind::parse};
     const FT_GlyphSlot slot = face->glyph;
@@ -200,6 +204,23 @@ Expected<TextOutline> text_outline(std::string_view text, const std::filesystem:
   }
   result.advance = std::max(widest, pen_x) * scale;
   return result;
+}
+
+}  // namespace
+
+Expected<TextOutline> text_outline(std::string_view text, const std::filesystem::path& font, const TextLayout& layout) {
+  return outline_in_face(text, font.string(), layout, [&](FT_Library library, FT_Face* face) {
+    return FT_New_Face(library, font.c_str(), 0, face);
+  });
+}
+
+Expected<TextOutline> text_outline(std::string_view text, std::span<const unsigned char> font_data,
+                                   const std::string& name, const TextLayout& layout) {
+  if (font_data.size() > static_cast<std::size_t>(std::numeric_limits<FT_Long>::max()))
+    return Error{fmt::format("'{}' is larger than FreeType reads", name)};
+  return outline_in_face(text, name, layout, [&](FT_Library library, FT_Face* face) {
+    return FT_New_Memory_Face(library, font_data.data(), static_cast<FT_Long>(font_data.size()), 0, face);
+  });
 }
 
 }  // namespace casteljau

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -340,14 +341,18 @@ void injective_parts(const BezierCurve& curve, Interval span, int depth, std::ve
 /// in the plane, reported beside the overlap.
 std::vector<CurveIntersection> merged(std::vector<CurveIntersection> points, std::vector<CurveIntersection> overlaps,
                                       double width_a, double width_b) {
-  // Overlaps of consecutive pieces that continue one another become one.
+  // Overlaps of consecutive pieces that continue one another become one:
+  // end to end in both parameters, b running the same way in both (a curve
+  // folding back on itself has overlaps that meet end to end with b turning
+  // back: those stay apart).
   std::sort(overlaps.begin(), overlaps.end(),
             [](const CurveIntersection& x, const CurveIntersection& y) { return x.a.lower < y.a.lower; });
   std::vector<CurveIntersection> joined;
   for (const CurveIntersection& o : overlaps) {
     if (!joined.empty()) {
       CurveIntersection& last = joined.back();
-      if (std::abs(o.a.lower - last.a.upper) <= kIntersectionJointSlack * width_a &&
+      const bool same_way = (o.b.upper >= o.b.lower) == (last.b.upper >= last.b.lower);
+      if (same_way && std::abs(o.a.lower - last.a.upper) <= kIntersectionJointSlack * width_a &&
           std::abs(o.b.lower - last.b.upper) <= kIntersectionJointSlack * width_b) {
         last.a.upper = o.a.upper;
         last.b.upper = o.b.upper;
@@ -652,6 +657,24 @@ bool on_shared_stretch(const std::vector<SharedPoint>& pairs, Interval si, Inter
                        kIntersectionSubdivisionWidth);
 }
 
+/// Whether the pair of sub-curves si x ti lies along the stretch that a and b
+/// share between the first and last shared points, followed exactly: b's
+/// parameter of the point of a at the middle of si falls within ti. Two
+/// pieces of one curve need not be parameterized alike (two arcs of one
+/// circle with other weights are related by a Möbius map, not an affine
+/// one), so the straight diagonal of on_shared_stretch can miss the stretch
+/// and leave every pair along it to be found as a tangency (a DXF polyline
+/// of two arcs of one circle: 200 of them in 2 s; issue 42's dxf fuzzer).
+bool along_shared_stretch(const BezierCurve& a, const BezierCurve& b, const std::vector<SharedPoint>& pairs,
+                          Interval si, Interval ti) {
+  if (pairs.size() < 2 || std::max(si.length(), ti.length()) > kIntersectionContactZone) return false;
+  const double s = 0.5 * (si.lower + si.upper);
+  if (s < pairs.front().s - kIntersectionSubdivisionWidth || s > pairs.back().s + kIntersectionSubdivisionWidth)
+    return false;
+  const double t = closest_point(b, point_at(a, s)).value().parameter;
+  return t >= ti.lower - kIntersectionSubdivisionWidth && t <= ti.upper + kIntersectionSubdivisionWidth;
+}
+
 /// What the shared points of two pieces of one curve make: the overlap from
 /// the first to the last, or, where they span no stretch, a tangency of order
 /// 0 (two arcs continuing one another at a point).
@@ -722,7 +745,7 @@ std::vector<Hit> space_piece_hits(const BezierCurve& a, const BezierCurve& b, do
     for (const SharedPoint& p : pairs)
       if (continue_one_another(a, b, p, tolerance)) continued.push_back(p);
   const auto shared = [&](Interval si, Interval ti) {
-    if (overlap) return on_shared_stretch(pairs, si, ti);
+    if (overlap) return on_shared_stretch(pairs, si, ti) || along_shared_stretch(a, b, pairs, si, ti);
     return std::any_of(continued.begin(), continued.end(),
                        [&](const SharedPoint& p) { return on_shared_stretch({p}, si, ti); });
   };
@@ -771,7 +794,9 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
     // Crossings where the algebraic curve passes twice through a point (a
     // double point), away from the shared stretch or point.
     std::vector<Hit> crossings;
-    const auto shared = [&](Interval si, Interval ti) { return on_shared_stretch(pairs, si, ti); };
+    const auto shared = [&](Interval si, Interval ti) {
+      return on_shared_stretch(pairs, si, ti) || along_shared_stretch(implicit, other, pairs, si, ti);
+    };
     subdivided_hits(implicit, {0.0, 1.0}, implicit, other, {0.0, 1.0}, other, false, tolerance, shared, crossings);
     for (const Hit& crossing : crossings) emit(crossing.s, crossing.t, crossing.kind, crossing.multiplicity);
     if (!pairs.empty()) hits.push_back(oriented(shared_hit(pairs), swap));
@@ -943,6 +968,83 @@ bool is_joint(const BezierCurve& arriving, double s, const BezierCurve& leaving,
   return lengths > 0.0 && dot(in, out) > tolerances::kJointReversalCosine * lengths;
 }
 
+/// A polynomial piece within `tolerance` of a straight line that turns back
+/// along it (a fold: x(t) along the line not monotone) covers stretches of
+/// the line twice: those are its self-overlaps, which the subdivision below
+/// cannot see (every pair of points on the two passes is a "tangency": it
+/// found thousands, slowly; issue 42's curve_numbers fuzzer). Here the piece
+/// is cut at the turning points, the roots of x'(t), into monotone passes,
+/// and each two passes whose ranges of x share more than the tolerance make
+/// one overlap, its ends found by bisection on the monotone x. Returns no
+/// value when the piece is not such a line (or is rational), and the
+/// overlaps (none for a monotone line) when it is.
+std::optional<std::vector<Hit>> line_fold_overlaps(const BezierCurve& piece, double tolerance) {
+  if (piece.is_rational()) return std::nullopt;
+  const PointArray& control = piece.control_points();
+  const Point origin(control[0].begin(), control[0].end());
+  // The line: through P_0 and the control point farthest from it.
+  Point direction;
+  double farthest = 0.0;
+  for (std::size_t k = 1; k < control.size(); ++k) {
+    const Point p(control[k].begin(), control[k].end());
+    if (const double d = distance(p, origin); d > farthest) {
+      farthest = d;
+      direction = p;
+    }
+  }
+  if (farthest <= tolerance) return std::nullopt;  // a point: left out by the caller
+  for (std::size_t c = 0; c < direction.size(); ++c) direction[c] = (direction[c] - origin[c]) / farthest;
+  std::vector<double> along(control.size());
+  for (std::size_t k = 0; k < control.size(); ++k) {
+    double x = 0.0, off = 0.0;
+    for (std::size_t c = 0; c < direction.size(); ++c) x += (control[k][c] - origin[c]) * direction[c];
+    for (std::size_t c = 0; c < direction.size(); ++c) {
+      const double r = control[k][c] - origin[c] - x * direction[c];
+      off += r * r;
+    }
+    if (std::sqrt(off) > tolerance) return std::nullopt;  // the hull leaves the line's tolerance
+    along[k] = x;
+  }
+  // Turning points: the roots of x'(t) inside (0, 1).
+  std::vector<double> slope(along.size() - 1);
+  for (std::size_t k = 0; k + 1 < along.size(); ++k) slope[k] = along[k + 1] - along[k];
+  std::vector<double> cuts{0.0};
+  for (const BernsteinRoot& root : bernstein_roots(slope))
+    if (root.t > 0.0 && root.t < 1.0 && root.multiplicity % 2 == 1) cuts.push_back(root.t);
+  cuts.push_back(1.0);
+  std::vector<Hit> overlaps;
+  const auto x_at = [&](double t) { return bernstein_value(along, t); };
+  // The parameter in [a, b] where the monotone x takes `value`: an end of the
+  // pass when the value is the end's (a turning point, where bisection would
+  // find it only to the square root of the rounding), else by bisection.
+  const auto solve = [&](double a, double b, double value) {
+    if (x_at(a) == value) return a;
+    if (x_at(b) == value) return b;
+    const bool rising = x_at(b) >= x_at(a);
+    for (int i = 0; i < 80 && b - a > 0.0; ++i) {
+      const double m = 0.5 * (a + b);
+      if ((x_at(m) < value) == rising) a = m;
+      else b = m;
+    }
+    return 0.5 * (a + b);
+  };
+  for (std::size_t p = 0; p + 1 < cuts.size(); ++p) {
+    for (std::size_t q = p + 1; q + 1 < cuts.size(); ++q) {
+      const double p0 = x_at(cuts[p]), p1 = x_at(cuts[p + 1]), q0 = x_at(cuts[q]), q1 = x_at(cuts[q + 1]);
+      const double low = std::max(std::min(p0, p1), std::min(q0, q1));
+      const double high = std::min(std::max(p0, p1), std::max(q0, q1));
+      if (high - low <= tolerance) continue;  // they touch (at a turning point) or not at all
+      const double s_low = solve(cuts[p], cuts[p + 1], low), s_high = solve(cuts[p], cuts[p + 1], high);
+      const double t_low = solve(cuts[q], cuts[q + 1], low), t_high = solve(cuts[q], cuts[q + 1], high);
+      Hit overlap{std::min(s_low, s_high), s_low < s_high ? t_low : t_high, IntersectionKind::overlap, 0};
+      overlap.s_end = std::max(s_low, s_high);
+      overlap.t_end = s_low < s_high ? t_high : t_low;
+      overlaps.push_back(overlap);
+    }
+  }
+  return overlaps;
+}
+
 Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tolerance tolerance) {
   if (curve.dimension() < 2)
     return Error{"self-intersections need a curve in R^2 or more, this one lives in R^" +
@@ -972,16 +1074,21 @@ Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tol
   const bool closed = distance(point_at(pieces.front(), 0.0), point_at(pieces.back(), 1.0)) <= tolerance.distance;
   for (std::size_t i = 0; i < count; ++i) {
     const BezierCurve& piece = pieces[i];
-    // Inside piece i: its injective parts against each other.
-    std::vector<Part> parts;
-    injective_parts(piece, {0.0, 1.0}, 0, parts);
+    // Inside piece i: a line folding back on itself overlaps itself; any
+    // other piece has its injective parts tried against each other.
     std::vector<Hit> inside;
-    const auto nothing = [](Interval, Interval) { return false; };
-    for (std::size_t p = 0; p < parts.size(); ++p)
-      for (std::size_t q = p + 1; q < parts.size(); ++q)
-        subdivided_hits(piece, parts[p].span, parts[p].curve, piece, parts[q].span, parts[q].curve, true,
-                        tolerance.distance, nothing, inside);
-    merge_tangent_zones(piece, piece, tolerance.distance, inside);
+    if (auto folds = line_fold_overlaps(piece, tolerance.distance)) {
+      inside = std::move(*folds);
+    } else {
+      std::vector<Part> parts;
+      injective_parts(piece, {0.0, 1.0}, 0, parts);
+      const auto nothing = [](Interval, Interval) { return false; };
+      for (std::size_t p = 0; p < parts.size(); ++p)
+        for (std::size_t q = p + 1; q < parts.size(); ++q)
+          subdivided_hits(piece, parts[p].span, parts[p].curve, piece, parts[q].span, parts[q].curve, true,
+                          tolerance.distance, nothing, inside);
+      merge_tangent_zones(piece, piece, tolerance.distance, inside);
+    }
     for (const Hit& hit : inside) {
       const bool seam = closed && count == 1 && hit.kind != IntersectionKind::overlap &&
                         is_joint(piece, std::max(hit.s, hit.t), piece, std::min(hit.s, hit.t), tolerance.distance);

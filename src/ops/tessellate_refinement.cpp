@@ -88,10 +88,22 @@ bool cell_needs_split(const Patch& patch, const Cell& cell, double tolerance, bo
     bend_u = std::max(bend_u, norm(at(mid, k) - chord_u));
     bend_v = std::max(bend_v, norm(at(k, mid) - chord_v));
   }
-  const Vec3 n00 = to_vec3(patch.surface.normal_at(ua, va)), n10 = to_vec3(patch.surface.normal_at(ub, va));
-  const Vec3 n01 = to_vec3(patch.surface.normal_at(ua, vb)), n11 = to_vec3(patch.surface.normal_at(ub, vb));
-  const bool turns_u = std::max(turn(n00, n10), turn(n01, n11)) > tolerances::kMeshMaxNormalTurn;
-  const bool turns_v = std::max(turn(n00, n01), turn(n10, n11)) > tolerances::kMeshMaxNormalTurn;
+  // The box of the samples: a cell flat at the tolerance's scale is not split for its normals.
+  Vec3 low = at(0, 0), high = low;
+  for (int k = 0; k < kGrid * kGrid; ++k) {
+    for (int c = 0; c < 3; ++c) {
+      low[c] = std::min(low[c], grid[3 * k + c]);
+      high[c] = std::max(high[c], grid[3 * k + c]);
+    }
+  }
+  const bool flat = norm(high - low) <= tolerances::kMeshFlatCellFraction * tolerance;
+  bool turns_u = false, turns_v = false;
+  if (!flat) {
+    const Vec3 n00 = to_vec3(patch.surface.normal_at(ua, va)), n10 = to_vec3(patch.surface.normal_at(ub, va));
+    const Vec3 n01 = to_vec3(patch.surface.normal_at(ua, vb)), n11 = to_vec3(patch.surface.normal_at(ub, vb));
+    turns_u = std::max(turn(n00, n10), turn(n01, n11)) > tolerances::kMeshMaxNormalTurn;
+    turns_v = std::max(turn(n00, n01), turn(n10, n11)) > tolerances::kMeshMaxNormalTurn;
+  }
   const bool too_far = error > tolerances::kMeshSampledDeviationFraction * tolerance;
   if (!too_far && !turns_u && !turns_v) return false;
   in_u = turns_u;

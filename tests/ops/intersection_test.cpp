@@ -17,6 +17,7 @@
 #include <cmath>
 #include <vector>
 
+#include "casteljau/bezier/evaluate.hpp"
 #include "casteljau/bezier/piecewise_bezier.hpp"
 #include "casteljau/bezier/split.hpp"
 #include "casteljau/bspline/bezier_pieces.hpp"
@@ -186,6 +187,67 @@ TEST(SelfIntersections, OfALoopAndNoneAtACusp) {
           .value();
   const auto crossing = self_intersections(eight, Tolerance{1e-9}).value();
   EXPECT_FALSE(crossing.empty());
+}
+
+// Issue 42 (the curve_numbers fuzzer): a cubic on a line that turns back
+// covers stretches twice. The subdivision saw every pair of points on the two
+// passes as a tangency (thousands of them, seconds); the passes are overlaps.
+TEST(SelfIntersections, ALineThatTurnsBackOverlapsItself) {
+  // Up and back: y = 6 t^2 (1 - t) turns at t = 2/3; the whole curve is traced twice.
+  const BezierCurve up_and_back_curve = bezier({{0, 0}, {0, 0}, {0, 2}, {0, 0}});
+  const auto up_and_back = self_intersections(up_and_back_curve, Tolerance{1e-9}).value();
+  ASSERT_EQ(up_and_back.size(), 1u);
+  EXPECT_EQ(up_and_back[0].kind, IntersectionKind::overlap);
+  EXPECT_EQ(up_and_back[0].a.lower, 0.0);
+  EXPECT_NEAR(up_and_back[0].a.upper, 2.0 / 3.0, 1e-15);
+  EXPECT_EQ(up_and_back[0].b.lower, 1.0);
+  EXPECT_NEAR(up_and_back[0].b.upper, 2.0 / 3.0, 1e-15);
+  // Three passes: x = 9t - 21t^2 + 14t^3 turns at t1,2 = 1/2 -+ sqrt(7)/14; the
+  // value at a turning point is taken once more at 3/2 - 2 t (the roots' sum
+  // is 21/14): at 1/2 + sqrt(7)/7 and 1/2 - sqrt(7)/7. Every two passes overlap,
+  // over [x(t2), x(t1)], each overlap with b one way (none joined across a turn).
+  const double t1 = 0.5 - std::sqrt(7.0) / 14, t2 = 0.5 + std::sqrt(7.0) / 14;
+  const double early = 0.5 - std::sqrt(7.0) / 7, late = 0.5 + std::sqrt(7.0) / 7;
+  const BezierCurve folded = bezier({{0, 0}, {3, 0}, {-1, 0}, {2, 0}});
+  const auto folds = self_intersections(folded, Tolerance{1e-9}).value();
+  ASSERT_EQ(folds.size(), 3u);
+  const double expected[3][4] = {{early, t1, t2, t1}, {early, t1, t2, late}, {t1, t2, late, t2}};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(folds[k].kind, IntersectionKind::overlap);
+    EXPECT_NEAR(folds[k].a.lower, expected[k][0], 1e-13) << k;
+    EXPECT_NEAR(folds[k].a.upper, expected[k][1], 1e-13) << k;
+    EXPECT_NEAR(folds[k].b.lower, expected[k][2], 1e-13) << k;
+    EXPECT_NEAR(folds[k].b.upper, expected[k][3], 1e-13) << k;
+  }
+  // A line that does not turn back has no self-intersection.
+  const BezierCurve straight = bezier({{0, 0}, {1, 1}, {2, 2}, {5, 5}});
+  EXPECT_TRUE(self_intersections(straight, Tolerance{1e-9}).value().empty());
+}
+
+// Issue 42 (the dxf fuzzer): two arcs of one circle with other weights are
+// not parameterized alike (a Möbius map between them, not an affine one):
+// the stretch they share was skipped along a straight diagonal and 200
+// "tangencies" were found beside the overlap, in 2 s.
+TEST(SelfIntersections, TwoArcsOfOneCircleWithOtherWeightsOverlapOnce) {
+  const double half = std::sqrt(0.5);
+  // A quarter circle from (1, 0) to (0, 1), then 135 degrees back from (0, 1)
+  // to angle -45 degrees (middle point at angle 22.5 degrees, 1 / cos 67.5 from
+  // the centre, weight cos 67.5): it retraces the whole quarter.
+  const double w = std::cos(67.5 * M_PI / 180), r = 1 / w;
+  const BezierCurve quarter = bezier({{1, 0}, {1, 1}, {0, 1}}, {1, half, 1});
+  const BezierCurve back = bezier({{0, 1}, {r * std::cos(22.5 * M_PI / 180), r * std::sin(22.5 * M_PI / 180)}, {half, -half}},
+                                  {1, w, 1});
+  const PiecewiseBezierCurve path = PiecewiseBezierCurve::make({quarter, back}).value();
+  const auto found = self_intersections(path, default_intersection_tolerance(path, path)).value();
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].kind, IntersectionKind::overlap);
+  EXPECT_NEAR(found[0].a.lower, 0.0, 1e-9);
+  EXPECT_NEAR(found[0].a.upper, 1.0, 1e-9);
+  EXPECT_NEAR(found[0].b.upper, 1.0, 1e-9);
+  // b's other end is where the way back passes (1, 0).
+  const Point there = point_at(back, found[0].b.lower - 1.0);
+  EXPECT_NEAR(there[0], 1.0, 1e-9);
+  EXPECT_NEAR(there[1], 0.0, 1e-9);
 }
 
 TEST(SelfIntersections, NoneAtJointsAndSeamsFoundOffByRounding) {

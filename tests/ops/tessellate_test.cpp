@@ -463,6 +463,29 @@ TEST(Tessellate, RefusesAnImpossibleToleranceBeforeAnyRefinement) {
   EXPECT_TRUE(heard.fractions.empty());
 }
 
+// Issue 42 (found by the model_json fuzzer): a sphere with one control point
+// moved onto its neighbour has a crease, where the normal flips at every
+// scale. The normals' turn split the cells along it down to the finest level,
+// millions of them, and the triangle limit refused the surface after 51 s.
+// A cell flat at the tolerance's scale (kMeshFlatCellFraction) is no longer
+// split for its normals: the crease costs cells of about the tolerance's size.
+TEST(Tessellate, ACreaseIsRefinedToTheToleranceNotToTheFinestCells) {
+  const BSplineSurface round = sphere({0, 0, 0}, 1.0);
+  std::vector<double> points(round.control_net().points().coordinates().begin(),
+                             round.control_net().points().coordinates().end());
+  // Row 0 (u = 0, the seam), column 3 onto column 2: the meridian folds back on itself.
+  for (int c = 0; c < 3; ++c) points[3 * 3 + c] = points[3 * 2 + c];
+  const BSplineSurface creased =
+      BSplineSurface::make(2, 2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, {0, 0, 0, 0.5, 0.5, 1, 1, 1},
+                           ControlNet::make(9, 5, PointArray::make(3, points).value()).value(),
+                           std::vector<double>(round.weights().begin(), round.weights().end()))
+          .value();
+  const SurfaceView view[] = {creased};
+  auto mesh = tessellate(view, Tolerance{0.1});
+  ASSERT_TRUE(mesh.has_value()) << mesh.error().message;
+  EXPECT_LT(mesh->triangles.size(), 20000u);
+}
+
 // Issue 15: a surface whose control points are all equal gave a 0-triangle
 // mesh called watertight. A surface without area (a point, or a curve such as
 // the ruled surface between a curve and itself) is refused, named; one edge

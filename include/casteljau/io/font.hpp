@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,5 +61,11 @@ struct TextOutline {
 /// a size of at most 1.37e+100"), a font without outlines (bitmap fonts).
 Expected<TextOutline> text_outline(std::string_view text, const std::filesystem::path& font,
                                    const TextLayout& layout = {});
+
+/// The same with the font's bytes in memory (a font fetched, embedded or
+/// fuzzed; FreeType's FT_New_Memory_Face): `name` names it in errors as the
+/// path does above. The bytes must outlive the call only.
+Expected<TextOutline> text_outline(std::string_view text, std::span<const unsigned char> font_data,
+                                   const std::string& name, const TextLayout& layout = {});
 
 }  // namespace casteljau

@@ -251,6 +251,15 @@ inline constexpr double kMeshSampledDeviationFraction = 0.75;
 /// vertices, so that shading and orientation agree, even at a loose tolerance.
 inline constexpr double kMeshMaxNormalTurn = 1.0471975511965976;
 
+/// A cell whose sampled points all fit in a box of diagonal at most this
+/// fraction of the tolerance is not split for its normals' turn: it is
+/// flat at the tolerance's scale whatever its normals do. Without it, a
+/// crease (a fold where the normal flips, as a collapsed control point makes)
+/// is refined to the quadtree's finest cells along its whole length, millions
+/// of cells before the triangle limit refuses it (a fuzzed sphere: 51 s).
+/// The distance test still applies to such a cell. Dimensionless.
+inline constexpr double kMeshFlatCellFraction = 0.5;
+
 /// Deepest subdivision of one knot-span cell of a tessellation's quadtree, in
 /// halvings per direction. Cells are addressed by integers (2^40 steps per
 /// knot span) so that neighbours agree exactly on shared vertices; a cell at

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# run.sh FUZZER NAME SECONDS WORK [fresh]: runs one libFuzzer target for
+# SECONDS on its seed corpus (tests/fuzz/corpus/NAME) and its dictionary
+# (when it has one), growing the corpus in WORK/corpus/NAME (kept between
+# runs: `make fuzz` continues where it stopped; `fresh`, as the smoke tests
+# pass, empties it first so that every smoke run starts from the seeds alone)
+# and writing what crashes, hangs or leaks to WORK/findings/NAME/. Each input may take at most 10 s and 2 GB (a hang or
+# an unbounded allocation is a finding, not a slow run). Prints libFuzzer's
+# final statistics; exit status non-zero on a finding.
+set -euo pipefail
+fuzzer=$1 name=$2 seconds=$3 work=$4 fresh=${5:-}
+here=$(cd "$(dirname "$0")" && pwd)
+if [ "$fresh" = fresh ]; then rm -rf "$work/corpus/$name"; fi
+mkdir -p "$work/corpus/$name" "$work/findings/$name"
+options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=2048 -print_final_stats=1
+         -artifact_prefix="$work/findings/$name/")
+if [ -f "$here/dictionaries/$name.dict" ]; then options+=(-dict="$here/dictionaries/$name.dict"); fi
+exec "$fuzzer" "${options[@]}" "$work/corpus/$name" "$here/corpus/$name"

@@ -1,0 +1,28 @@
+// Fuzz target: whole SVG documents (io/svg_drawing: pugixml, styles,
+// transforms, <use>, units), in user units and in millimetres.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "casteljau/io/svg_drawing.hpp"
+#include "fuzz_support.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace casteljau;
+  const auto text = fuzz::text_of(data, size);
+  for (DrawingUnits units : {DrawingUnits::user, DrawingUnits::millimetres}) {
+    auto drawing = parse_svg_drawing(text, "fuzz.svg", units);
+    if (!drawing) {
+      fuzz::require_message(drawing.error(), "parse_svg_drawing");
+      continue;
+    }
+    for (const Error& problem : drawing->problems) fuzz::require_message(problem, "an SVG problem");
+    std::vector<Model> models;
+    for (const SvgCurve& curve : drawing->curves) {
+      if (models.size() == 4) break;
+      models.emplace_back(curve.curve);
+    }
+    fuzz::exercise_models(models);
+  }
+  return 0;
+}
