@@ -101,6 +101,41 @@ std::string rounded_up(double x) {
 /// (tessellate_estimate.hpp, a lower bound) already exceed the limit, naming
 /// the tolerance at which the estimate leaves tolerances::kMeshEstimateMargin
 /// for the real count.
+/// Refuses a patch that jumps across one of its knot lines (an interior knot
+/// of multiplicity degree + 1: the two sides are separate surfaces). No cell
+/// that ends at the line can meet the tolerance, since evaluation there takes
+/// the other side's value: the quadtree was refined to its finest cells along
+/// the whole line until the triangle limit stopped it, 48 s later (issue 42's
+/// model_json fuzzer). The jump is the distance between the point at the knot
+/// and the point a step 2^-30 of the span before it, at five v (u) values; a
+/// jump is more than the tolerance and more than 100 times the same step
+/// after the knot (where the surface is continuous both are its slope times
+/// the step).
+Status check_continuous_patches(std::span<const SurfaceView> patches, double tolerance) {
+  for (std::size_t p = 0; p < patches.size(); ++p) {
+    const SurfaceView& surface = patches[p];
+    for (const bool along_u : {true, false}) {
+      const std::vector<double> knots = along_u ? surface.breakpoints_u() : surface.breakpoints_v();
+      const Interval across = along_u ? surface.domain_v() : surface.domain_u();
+      for (std::size_t k = 1; k + 1 < knots.size(); ++k) {
+        const double step = 0x1p-30 * std::min(knots[k] - knots[k - 1], knots[k + 1] - knots[k]);
+        for (int j = 0; j <= 4; ++j) {
+          const double w = across.lower + j * (across.upper - across.lower) / 4;
+          const auto at = [&](double x) { return along_u ? surface.point_at(x, w) : surface.point_at(w, x); };
+          const Point before = at(knots[k] - step), on = at(knots[k]), after = at(knots[k] + step);
+          const double jump = distance(before, on), smooth = distance(on, after);
+          if (jump > tolerance && jump > 100.0 * smooth) {
+            return Error{"patch " + std::to_string(p) + " is not continuous across " + (along_u ? "u" : "v") +
+                         " = " + detail::number_text(knots[k]) + " (a knot of multiplicity degree + 1 there): it jumps by " +
+                         detail::number_text(jump) + "; split it at that knot and tessellate the two parts"};
+          }
+        }
+      }
+    }
+  }
+  return {};
+}
+
 Status check_estimate(const CellEstimate& estimate, double tolerance) {
   const double most_cells = static_cast<double>(tolerances::kMaxMeshTriangles) / 2.0;
   const double cells = estimate.cells(tolerance);
@@ -234,6 +269,7 @@ Expected<TriangleMesh> tessellate(std::span<const SurfaceView> patches, Toleranc
                  "check on surfaces of size " + detail::number_text(scale) + " (at least " +
                  detail::number_text(smallest) + ")"};
   }
+  if (auto continuous = check_continuous_patches(patches, e); !continuous) return continuous.error();
   // Shared edges agree to rounding; at least a tiny absolute distance so that
   // surfaces at the origin (scale 0) still compare.
   const double match_distance = std::max(tolerances::kMeshSharedEdgeRelative * scale, tolerances::kScaleFloor);

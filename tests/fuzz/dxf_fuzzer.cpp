@@ -2,7 +2,6 @@
 // arcs, polylines with bulges.
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #include "casteljau/io/dxf.hpp"
 #include "fuzz_support.hpp"
@@ -15,11 +14,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   for (const Error& problem : drawing->problems) fuzz::require_message(problem, "a DXF problem");
-  std::vector<Model> models;
-  for (const DxfCurve& curve : drawing->curves) {
-    if (models.size() == 4) break;
-    models.push_back(curve.curve);
-  }
-  fuzz::exercise_models(models);
+  fuzz::exercise_curves_of(drawing->curves, [](const DxfCurve& curve) { return curve.curve; });
   return 0;
 }

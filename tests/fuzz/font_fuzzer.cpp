@@ -3,7 +3,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <vector>
 
 #include "casteljau/io/font.hpp"
 #include "fuzz_support.hpp"
@@ -17,11 +16,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::require_message(outline.error(), "text_outline");
     return 0;
   }
-  std::vector<Model> models;
-  for (const GlyphContour& contour : outline->contours) {
-    if (models.size() == 4) break;
-    models.emplace_back(contour.curve);
-  }
-  fuzz::exercise_models(models);
+  fuzz::exercise_curves_of(outline->contours, [](const GlyphContour& contour) { return contour.curve; });
   return 0;
 }

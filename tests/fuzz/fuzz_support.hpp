@@ -8,6 +8,7 @@
 // same files build a plain driver for the regression inputs (replay.cpp).
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <span>
@@ -47,6 +48,18 @@ void exercise_model(const Model& model);
 
 /// Runs exercise_model on at most `limit` models of a reader's result.
 void exercise_models(std::span<const Model> models, std::size_t limit = 8);
+
+/// Runs exercise_model on the curves of the first `limit` items of a reader's
+/// result, `curve_of(item)` giving each item's curve.
+template <class Items, class CurveOf>
+void exercise_curves_of(const Items& items, CurveOf curve_of, std::size_t limit = 4) {
+  std::vector<Model> models;
+  for (const auto& item : items) {
+    if (models.size() == limit) break;
+    models.emplace_back(curve_of(item));
+  }
+  exercise_models(models, limit);
+}
 
 /// The fuzzer's bytes as text.
 inline std::string_view text_of(const std::uint8_t* data, std::size_t size) {

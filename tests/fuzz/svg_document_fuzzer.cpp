@@ -2,7 +2,6 @@
 // transforms, <use>, units), in user units and in millimetres.
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #include "casteljau/io/svg_drawing.hpp"
 #include "fuzz_support.hpp"
@@ -17,12 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       continue;
     }
     for (const Error& problem : drawing->problems) fuzz::require_message(problem, "an SVG problem");
-    std::vector<Model> models;
-    for (const SvgCurve& curve : drawing->curves) {
-      if (models.size() == 4) break;
-      models.emplace_back(curve.curve);
-    }
-    fuzz::exercise_models(models);
+    fuzz::exercise_curves_of(drawing->curves, [](const SvgCurve& curve) { return curve.curve; });
   }
   return 0;
 }

@@ -486,6 +486,28 @@ TEST(Tessellate, ACreaseIsRefinedToTheToleranceNotToTheFinestCells) {
   EXPECT_LT(mesh->triangles.size(), 20000u);
 }
 
+// Issue 42 (the model_json fuzzer): the sphere's u knots with 0.5 three times
+// (degree + 1: the two halves no longer meet) was refined along u = 0.5 to the
+// finest cells for 48 s before the triangle limit. A jump across a knot line
+// is refused at once, named, with what to do.
+TEST(Tessellate, RefusesAPatchThatJumpsAcrossAKnotLine) {
+  const BSplineSurface round = sphere({0, 0, 0}, 1.0);
+  const BSplineSurface broken =
+      BSplineSurface::make(2, 2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.5, 0.75, 1, 1, 1}, {0, 0, 0, 0.5, 0.5, 1, 1, 1},
+                           round.control_net(), std::vector<double>(round.weights().begin(), round.weights().end()))
+          .value();
+  const SurfaceView view[] = {broken};
+  auto mesh = tessellate(view, Tolerance{0.1});
+  ASSERT_FALSE(mesh.has_value());
+  EXPECT_EQ(mesh.error().message.rfind("patch 0 is not continuous across u = 0.5 (a knot of multiplicity degree + 1 "
+                                       "there): it jumps by ", 0),
+            0u)
+      << mesh.error().message;
+  // The sphere itself (knots of multiplicity 2 = degree: continuous) is not refused.
+  const SurfaceView whole[] = {round};
+  EXPECT_TRUE(tessellate(whole, Tolerance{0.1}).has_value());
+}
+
 // Issue 15: a surface whose control points are all equal gave a 0-triangle
 // mesh called watertight. A surface without area (a point, or a curve such as
 // the ruled surface between a curve and itself) is refused, named; one edge
