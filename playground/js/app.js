@@ -114,7 +114,7 @@
     setTimeout(() => URL.revokeObjectURL(link.href), 0);
   }
 
-  function exportCurve(format) {
+  function exportModel(format) {
     try {
       const shape = current && current.instance.model ? current.instance.model() : null;
       if (!shape) { status('this view has nothing to export'); return; }
@@ -158,8 +158,8 @@
     }
     buildNavigation();
     window.addEventListener('pointerup', writeState);
-    document.getElementById('export-json').addEventListener('click', () => exportCurve('json'));
-    document.getElementById('export-svg').addEventListener('click', () => exportCurve('svg'));
+    document.getElementById('export-json').addEventListener('click', () => exportModel('json'));
+    document.getElementById('export-svg').addEventListener('click', () => exportModel('svg'));
     const { view, values } = PageState.read();
     show(view, values);
     // The page writes its own state with replaceState (no event): a hashchange

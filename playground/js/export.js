@@ -58,19 +58,9 @@
     }
     // The control points bound the curve (convex hull): their box sets the tolerance.
     const controls = curve.kind === 'piecewise' ? curve.pieces.map((piece) => piece.control) : [curve.control];
-    const box = (arrays) => {
-      let xmin = Infinity, xmax = -Infinity, ymin = Infinity, ymax = -Infinity;
-      for (const flat of arrays) {
-        for (let i = 0; i < flat.length; i += 2) {
-          xmin = Math.min(xmin, flat[i]); xmax = Math.max(xmax, flat[i]);
-          ymin = Math.min(ymin, flat[i + 1]); ymax = Math.max(ymax, flat[i + 1]);
-        }
-      }
-      return { xmin, xmax, ymin, ymax };
-    };
-    const hull = box(controls);
+    const hull = Plot.boundsOf(controls);
     const points = library.polyline(curve, 1e-4 * Math.max(hull.xmax - hull.xmin, hull.ymax - hull.ymin, 1e-9)).points;
-    const { xmin, xmax, ymin, ymax } = box([points]);
+    const { xmin, xmax, ymin, ymax } = Plot.boundsOf([points]);
     const size = Math.max(xmax - xmin, ymax - ymin, 1e-9);
     const margin = 0.05 * size;
     const commands = [];

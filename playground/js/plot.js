@@ -57,8 +57,9 @@
       this.updateScale();
     }
 
-    /// Shows every point of the flat arrays, with a margin (a fraction of the size).
-    fit(arrays, margin = 0.08) {
+    /// {xmin, xmax, ymin, ymax} of the finite points of flat [x0, y0, ...] arrays
+    /// (xmin > xmax when there are none).
+    static boundsOf(arrays) {
       let xmin = Infinity, xmax = -Infinity, ymin = Infinity, ymax = -Infinity;
       for (const flat of arrays) {
         for (let i = 0; i + 1 < flat.length; i += 2) {
@@ -67,6 +68,12 @@
           ymin = Math.min(ymin, flat[i + 1]); ymax = Math.max(ymax, flat[i + 1]);
         }
       }
+      return { xmin, xmax, ymin, ymax };
+    }
+
+    /// Shows every point of the flat arrays, with a margin (a fraction of the size).
+    fit(arrays, margin = 0.08) {
+      let { xmin, xmax, ymin, ymax } = Plot.boundsOf(arrays);
       if (!(xmin <= xmax)) { xmin = -1; xmax = 1; ymin = -1; ymax = 1; }
       const size = Math.max(xmax - xmin, ymax - ymin, 1e-9);
       const pad = size * margin;

@@ -97,10 +97,6 @@ std::string rounded_up(double x) {
   return detail::number_text(std::ceil(x / unit * (1.0 - 1e-12)) * unit);
 }
 
-/// Refuses, before any refinement, a request whose estimated cells
-/// (tessellate_estimate.hpp, a lower bound) already exceed the limit, naming
-/// the tolerance at which the estimate leaves tolerances::kMeshEstimateMargin
-/// for the real count.
 /// Refuses a patch that jumps across one of its knot lines (an interior knot
 /// of multiplicity degree + 1: the two sides are separate surfaces). No cell
 /// that ends at the line can meet the tolerance, since evaluation there takes
@@ -136,6 +132,10 @@ Status check_continuous_patches(std::span<const SurfaceView> patches, double tol
   return {};
 }
 
+/// Refuses, before any refinement, a request whose estimated cells
+/// (tessellate_estimate.hpp, a lower bound) already exceed the limit, naming
+/// the tolerance at which the estimate leaves tolerances::kMeshEstimateMargin
+/// for the real count.
 Status check_estimate(const CellEstimate& estimate, double tolerance) {
   const double most_cells = static_cast<double>(tolerances::kMaxMeshTriangles) / 2.0;
   const double cells = estimate.cells(tolerance);
