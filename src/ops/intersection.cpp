@@ -247,6 +247,16 @@ int zone_multiplicity(const std::vector<double>& p, double t, double noise, int 
   return parity_hint;
 }
 
+/// Whether a piece stays within `tolerance` of its first point (its control
+/// points do, and the piece lies in their hull): where a curve rests.
+bool stays_at_one_point(const BezierCurve& piece, double tolerance) {
+  const PointArray& control = piece.control_points();
+  const Point first(control[0].begin(), control[0].end());
+  for (std::size_t j = 1; j < control.size(); ++j)
+    if (distance(Point(control[j].begin(), control[j].end()), first) > tolerance) return false;
+  return true;
+}
+
 bool boxes_meet(const BezierCurve& a, const BezierCurve& b, double tolerance) {
   for (int j = 0; j < a.dimension(); ++j) {
     double a_low = INFINITY, a_high = -INFINITY, b_low = INFINITY, b_high = -INFINITY;
@@ -518,8 +528,14 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
     stack.pop_back();
     if (!boxes_meet(pair.a, pair.b, tolerance)) continue;
     if (skip(pair.s, pair.t)) continue;
-    if (std::max(pair.s.length(), pair.t.length()) > kIntersectionSubdivisionWidth) {
-      const bool split_a = pair.s.length() >= pair.t.length();
+    // Halved until narrow, or until both sub-curves rest within the
+    // tolerance of a point (a stall: repeated control points, a cusp), where
+    // every finer pair would be one more solution of the same zone (a
+    // degree-15 curve resting at both ends took 140 s; issue 42's fuzzer).
+    const bool open_a = pair.s.length() > kIntersectionSubdivisionWidth && !stays_at_one_point(pair.a, tolerance);
+    const bool open_b = pair.t.length() > kIntersectionSubdivisionWidth && !stays_at_one_point(pair.b, tolerance);
+    if (open_a || open_b) {
+      const bool split_a = open_a && (!open_b || pair.s.length() >= pair.t.length());
       const auto halves = split_at(split_a ? pair.a : pair.b, 0.5).value();
       const Interval& span = split_a ? pair.s : pair.t;
       const double middle = 0.5 * (span.lower + span.upper);
@@ -554,9 +570,16 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
     // over the contact zone, where the curves stay within the tolerance: one
     // tangency per zone.
     const auto seen = std::find_if(found.begin() + static_cast<std::ptrdiff_t>(first_new), found.end(), [&](const Hit& f) {
-      if (crossing)
-        return f.kind == IntersectionKind::transversal && std::abs(f.s - s) <= kIntersectionSameCrossing &&
-               std::abs(f.t - t) <= kIntersectionSameCrossing;
+      if (crossing) {
+        if (f.kind != IntersectionKind::transversal) return false;
+        const bool same_s = std::abs(f.s - s) <= kIntersectionSameCrossing;
+        const bool same_t = std::abs(f.t - t) <= kIntersectionSameCrossing;
+        // One branch crossing a stretch where the other rests: one crossing
+        // (that other branch stays at the point between the two solutions).
+        if (same_s && !same_t) return stays_at_one_point(extended_segment(b, std::min(f.t, t), std::max(f.t, t)), tolerance);
+        if (same_t && !same_s) return stays_at_one_point(extended_segment(a, std::min(f.s, s), std::max(f.s, s)), tolerance);
+        return same_s && same_t;
+      }
       if (f.kind != IntersectionKind::tangent || std::abs(f.s - s) > kIntersectionZoneReach ||
           std::abs(f.t - t) > kIntersectionZoneReach)
         return false;
@@ -1058,12 +1081,7 @@ Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tol
   std::vector<BezierCurve> pieces;
   std::vector<Interval> spans;
   for (std::size_t i = 0; i < all.pieces.size(); ++i) {
-    const PointArray& control = all.pieces[i].control_points();
-    const Point first(control[0].begin(), control[0].end());
-    bool point = true;
-    for (std::size_t j = 1; j < control.size() && point; ++j)
-      point = distance(Point(control[j].begin(), control[j].end()), first) <= tolerance.distance;
-    if (point) continue;
+    if (stays_at_one_point(all.pieces[i], tolerance.distance)) continue;
     pieces.push_back(all.pieces[i]);
     spans.push_back({all.breakpoints[i], all.breakpoints[i + 1]});
   }

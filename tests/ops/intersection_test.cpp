@@ -192,6 +192,34 @@ TEST(SelfIntersections, OfALoopAndNoneAtACusp) {
 // Issue 42 (the curve_numbers fuzzer): a cubic on a line that turns back
 // covers stretches twice. The subdivision saw every pair of points on the two
 // passes as a tangency (thousands of them, seconds); the passes are overlaps.
+// A closed curve that rests at its closing point (five repeated control points
+// at each end) and loops once: x has control values 0 x5, 2, -12, 12, -2, 0 x5,
+// so x(t) = 2574 t^5 (1 - t)^5 (1 - 2t)(9t^2 - 9t + 1), and the mirror symmetry
+// C(1 - t) = (-x(t), y(t)) puts the loop's crossing on x = 0 at
+// t = 1/2 -+ sqrt(5)/6. Every pair of points of the two rests is within the
+// tolerance: the subdivision used to spend its pair budget there and miss
+// the loop (issue 42's curve_numbers fuzzer found a degree-15 such curve
+// taking 140 s).
+TEST(SelfIntersections, ACurveRestingAtItsClosingPointStillFindsItsLoop) {
+  const auto resting = [](std::vector<std::vector<double>> middle) {
+    std::vector<std::vector<double>> rows(5, {0.0, 0.0});
+    rows.insert(rows.end(), middle.begin(), middle.end());
+    rows.insert(rows.end(), 5, {0.0, 0.0});
+    return bezier(rows);
+  };
+  const BezierCurve loop = resting({{2, 2}, {-12, 6}, {12, 6}, {-2, 2}});
+  const auto crossings = self_intersections(loop, default_intersection_tolerance(loop, loop)).value();
+  ASSERT_EQ(crossings.size(), 1u);
+  EXPECT_EQ(crossings[0].kind, IntersectionKind::transversal);
+  EXPECT_NEAR(crossings[0].a.lower, 0.5 - std::sqrt(5.0) / 6, 1e-12);
+  EXPECT_NEAR(crossings[0].b.lower, 0.5 + std::sqrt(5.0) / 6, 1e-12);
+  EXPECT_NEAR(crossings[0].point[0], 0.0, 1e-12);
+  // x = c t^6 (1 - t)^6 (2t - 1) vanishes inside only at t = 1/2, where y > 0:
+  // no crossing, and the rests at the seam are not one.
+  const BezierCurve arch = resting({{0, 1}, {-8, 4}, {8, 4}, {0, 1}});
+  EXPECT_TRUE(self_intersections(arch, default_intersection_tolerance(arch, arch)).value().empty());
+}
+
 TEST(SelfIntersections, ALineThatTurnsBackOverlapsItself) {
   // Up and back: y = 6 t^2 (1 - t) turns at t = 2/3; the whole curve is traced twice.
   const BezierCurve up_and_back_curve = bezier({{0, 0}, {0, 0}, {0, 2}, {0, 0}});
