@@ -65,7 +65,7 @@ define report
 	fi
 endef
 
-.PHONY: all deps bench-deps build python asan wasm playground fuzz fuzz-build test check demo bench bench-playground bench-publish clean
+.PHONY: all deps bench-deps build python asan wasm playground fuzz fuzz-build coverage python-asan test check demo bench bench-playground bench-publish clean
 
 all: build
 
@@ -127,6 +127,41 @@ fuzz: fuzz-build
 	  name=$$(basename $$fuzzer _fuzzer); echo "== fuzz $$name ($(FUZZ_SECONDS) s)"; \
 	  bash tests/fuzz/run.sh $$fuzzer $$name $(FUZZ_SECONDS) $(CURDIR)/out/fuzz 2>&1 | grep -E '^stat::|^#[0-9]+ *DONE|ERROR|SUMMARY|artifact' || exit 1; \
 	done
+
+# The Python module built with AddressSanitizer + UBSan (build-asan/python)
+# and the pytest suite run on it, the sanitizer runtimes preloaded into
+# python3 (docs/python.md): the numpy boundary checked too. Not part of `make
+# test` (the instrumented module and its suite take minutes); leaks are not
+# reported (CPython's own allocations would drown ours).
+python-asan: asan
+	cmake --build --preset asan -j $(JOBS) --target casteljau_python
+	LD_PRELOAD="$$(g++ -print-file-name=libasan.so):$$(g++ -print-file-name=libubsan.so)" \
+	  ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+	  CASTELJAU_CLI=$(CURDIR)/build-asan/casteljau CASTELJAU_PYTHONPATH=$(CURDIR)/build-asan/python \
+	  $(PYTHON) -m pytest -q -p no:cacheprovider -n $(JOBS) tests/python
+
+# Coverage (docs/coverage.md): the default tree's suites (C++, CLI, pytest)
+# run in build-coverage/ (-O0, gcov's counters in our objects only), read by
+# gcovr into out/coverage/ (index.html, coverage.json, uncovered.txt) and
+# summarized per layer by tests/coverage/report.py. Not part of `make test`.
+# The package tests are left out: they link the installed, instrumented
+# archives into programs of their own, built without gcov's runtime.
+COVERAGE_PACKAGES := gcovr
+coverage: deps
+	$(call install_missing,$(COVERAGE_PACKAGES))
+	cmake --preset coverage $(CMAKE_FLAGS) >/dev/null
+	cmake --build --preset coverage -j $(JOBS)
+	find build-coverage -name '*.gcda' -delete
+	cd build-coverage && ctest --output-on-failure -j $(JOBS) -LE python -E '^package\.'
+	CASTELJAU_CLI=$(CURDIR)/build-coverage/casteljau CASTELJAU_PYTHONPATH=$(CURDIR)/build-coverage/python \
+	  $(PYTHON) -m pytest -q -p no:cacheprovider -n $(JOBS) tests/python
+	rm -rf out/coverage && mkdir -p out/coverage
+	gcovr --root . --object-directory build-coverage --filter 'src/' --filter 'include/' --filter 'cli/' \
+	  --filter 'python/' --exclude-throw-branches --exclude-unreachable-branches -j $(JOBS) \
+	  --json out/coverage/coverage.json
+	gcovr --add-tracefile out/coverage/coverage.json --html-details out/coverage/index.html
+	$(PYTHON) tests/coverage/report.py out/coverage/coverage.json --uncovered out/coverage/uncovered.txt
+	@echo "make coverage: out/coverage/index.html, what no suite ran in out/coverage/uncovered.txt"
 
 # The web playground (issue 19): the core and its bindings (wasm/) built by
 # em++ in build-wasm/, with the page of playground/, copied to out/playground/.

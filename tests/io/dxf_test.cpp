@@ -178,6 +178,35 @@ TEST(DxfRead, TheUnitAFileStatesIsKeptWithItsModels) {
   EXPECT_EQ(dxf_unit_name(21), "unit code 21");
 }
 
+// Every $INSUNITS code (Autodesk's DXF reference, HEADER section) against the
+// unit's definition, not against the table: an inch is 25.4 mm, a foot 12
+// inches, a yard 3 feet, a mile 5280 feet, a mil and a microinch 10^-3 and
+// 10^-6 inch; the metric units are powers of ten of the metre; the astronomical
+// unit is 149 597 870 700 m (IAU 2012), the light year c times 365.25 days of
+// 86 400 s (c = 299 792 458 m/s), the parsec 648 000 / pi au (IAU 2015).
+TEST(DxfRead, EveryUnitCodeHasTheScaleOfItsDefinition) {
+  const double inch = 25.4, foot = 12 * inch;
+  const struct {
+    int code;
+    double millimetres;
+    const char* name;
+  } units[] = {{1, inch, "inches"}, {2, foot, "feet"}, {3, 5280 * foot, "miles"}, {4, 1.0, "millimetres"},
+               {5, 10.0, "centimetres"}, {6, 1e3, "metres"}, {7, 1e6, "kilometres"}, {8, inch * 1e-6, "microinches"},
+               {9, inch * 1e-3, "mils"}, {10, 3 * foot, "yards"}, {11, 1e-7, "angstroms"}, {12, 1e-6, "nanometres"},
+               {13, 1e-3, "microns"}, {14, 100.0, "decimetres"}, {15, 1e4, "decametres"}, {16, 1e5, "hectometres"},
+               {17, 1e12, "gigametres"}, {18, 149597870700.0 * 1e3, "astronomical units"},
+               {19, 299792458.0 * 365.25 * 86400 * 1e3, "light years"},
+               {20, 648000 / std::numbers::pi * 149597870700.0 * 1e3, "parsecs"}};
+  for (const auto& unit : units) {
+    EXPECT_NEAR(dxf_unit_millimetres(unit.code), unit.millimetres, 1e-15 * unit.millimetres) << unit.name;
+    EXPECT_EQ(dxf_unit_name(unit.code), unit.name);
+  }
+  EXPECT_EQ(dxf_unit_millimetres(0), 0.0);  // unitless: no scale
+  EXPECT_EQ(dxf_unit_name(0), "no unit");
+  EXPECT_EQ(dxf_unit_millimetres(-1), 0.0);
+  EXPECT_EQ(dxf_unit_name(-1), "unit code -1");
+}
+
 TEST(DxfRead, FileErrorsNameTheirLine) {
   const auto message = [](const std::string& text) {
     auto drawing = parse_dxf_drawing(text, "t.dxf");
