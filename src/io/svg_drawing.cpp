@@ -210,7 +210,7 @@ class Reader {
       if (!parsed) return with_context(parsed.error(), fmt::format("{}, {}", source_, where(root)));
       if (parsed->percent) return std::optional<double>{};
       if (parsed->value < 0.0)
-        return Error{fmt::format("{}, {}: a negative {} ({})", source_, where(root), name, parsed->value)};
+        return Error{fmt::format("{}, {}: a negative {} ({})", source_, where(root), name, trim(attribute.value()))};
       (std::string_view(name) == "width" ? width_mm : height_mm) = parsed->millimetres;
       return std::optional<double>{parsed->value};
     };

@@ -373,6 +373,72 @@ TEST(SvgDrawing, DocumentErrors) {
             std::string::npos);
 }
 
+// What a drawing may get wrong besides its path data, each refused with its
+// line and element while the rest is drawn (found by `make coverage`: no
+// test fed these; docs/coverage.md).
+TEST(SvgDrawing, MalformedAttributesAreProblemsAndTheRestIsDrawn) {
+  EXPECT_EQ(problems_of("<path fill-rule='sideways' d='M0 0L1 1'/>"),
+            std::vector<std::string>{"t.svg, line 2, <path>: fill-rule: 'sideways' is not nonzero or evenodd"});
+  EXPECT_EQ(problems_of("<svg width='-1' height='2'><path d='M0 0L1 1'/></svg>"),
+            std::vector<std::string>{"t.svg, line 2, <svg>: a negative width or height"});
+  EXPECT_EQ(problems_of("<svg width='2' height='2' viewBox='0 0 x 1'><path d='M0 0L1 1'/></svg>"),
+            std::vector<std::string>{"t.svg, line 2, <svg>: viewBox, character 5 ('x'): expected a number, a viewBox "
+                                     "is min-x min-y width height"});
+  EXPECT_EQ(problems_of("<svg width='2' height='2' viewBox='0 0 1 1' preserveAspectRatio='sideways'>"
+                        "<path d='M0 0L1 1'/></svg>"),
+            std::vector<std::string>{"t.svg, line 2, <svg>: preserveAspectRatio: 'sideways' is not none or "
+                                     "x{Min,Mid,Max}Y{Min,Mid,Max} with meet or slice"});
+  EXPECT_EQ(problems_of("<polyline points='0 0 1 x'/>"),
+            std::vector<std::string>{"t.svg, line 2, <polyline>: points, character 7 ('x'): expected a number, points "
+                                     "are x,y pairs"});
+  EXPECT_EQ(problems_of("<polyline points='0 0 1 1e999'/>"),
+            std::vector<std::string>{"t.svg, line 2, <polyline>: points, character 7 ('1'): '1e999' overflows to "
+                                     "infinity, numbers must be finite"});
+  // Each scale is below the coordinate limit; their product takes the points beyond it.
+  EXPECT_EQ(problems_of("<g transform='scale(1e60)'><path transform='scale(1e60)' d='M0 0L1 1'/></g>"),
+            std::vector<std::string>{"t.svg, line 2, <path>: its transforms take a point beyond 1e+100, the largest "
+                                     "coordinate casteljau takes"});
+  const auto root_style = parse_svg_drawing("<svg xmlns='http://www.w3.org/2000/svg' fill-rule='x'>\n<path d='M0 0L1 1'/></svg>", "t.svg");
+  ASSERT_TRUE(root_style);
+  ASSERT_EQ(root_style->problems.size(), 1u);
+  EXPECT_EQ(root_style->problems[0].message, "t.svg, line 1, <svg>: fill-rule: 'x' is not nonzero or evenodd");
+  EXPECT_EQ(root_style->curves.size(), 1u);
+}
+
+// Accepted forms: a namespace prefix on the elements, !important in a style,
+// a nested viewport of zero size (not drawn, as SVG says), a <use> of another
+// file (skipped: only this file is read).
+TEST(SvgDrawing, PrefixedElementsImportantStylesAndEmptyViewports) {
+  const auto prefixed =
+      parse_svg_drawing("<svg:svg xmlns:svg='http://www.w3.org/2000/svg'><svg:path d='M0 0L1 1'/></svg:svg>", "t.svg");
+  ASSERT_TRUE(prefixed);
+  EXPECT_EQ(prefixed->curves.size(), 1u);
+  EXPECT_TRUE(prefixed->problems.empty());
+  const auto important = read_drawing("<path style='fill-rule: evenodd !important' d='M0 0L1 1'/>");
+  ASSERT_EQ(important.curves.size(), 1u);
+  EXPECT_EQ(important.curves[0].fill_rule, FillRule::evenodd);
+  EXPECT_TRUE(read_drawing("<svg width='0' height='2'><path d='M0 0L1 1'/></svg>").curves.empty());
+  EXPECT_TRUE(read_drawing("<svg width='2' height='2' viewBox='0 0 0 1'><path d='M0 0L1 1'/></svg>").curves.empty());
+  const auto external = read_drawing("<use href='other.svg#p'/>");
+  EXPECT_TRUE(external.curves.empty());
+  ASSERT_EQ(external.skipped.size(), 1u);
+  EXPECT_EQ(external.skipped[0], "line 1: <use> (refers to 'other.svg#p' outside this file, which is not read)");
+}
+
+// In millimetres the root's size must be a usable length.
+TEST(SvgDrawing, MillimetresRefuseANegativeRootSizeOrAnEmptyViewBox) {
+  const auto message = [](const std::string& root) {
+    auto drawing = parse_svg_drawing(root + "<path d='M0 0L1 1'/></svg>", "t.svg", DrawingUnits::millimetres);
+    return drawing ? std::string("(read)") : drawing.error().message;
+  };
+  EXPECT_EQ(message("<svg xmlns='http://www.w3.org/2000/svg' width='-3mm' height='2mm'>"),
+            "t.svg, line 1, <svg>: a negative width (-3mm)");
+  EXPECT_EQ(message("<svg xmlns='http://www.w3.org/2000/svg' width='3mm' height='2mm' viewBox='0 0 0 5'>"),
+            "t.svg: the root's viewBox has a zero width or height, its size in mm is undefined");
+  EXPECT_EQ(message("<svg xmlns='http://www.w3.org/2000/svg' width='3q' height='2mm'>"),
+            "t.svg, line 1, <svg>: width, character 2 ('q'): 'q' is not a unit of length (px, in, cm, mm, Q, pt, pc, %)");
+}
+
 TEST(SvgDrawing, ReadModelsTakesDrawings) {
   const auto folder = std::filesystem::temp_directory_path() / "casteljau_svg_drawing_test";
   std::filesystem::create_directories(folder);

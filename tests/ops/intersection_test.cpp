@@ -427,6 +427,29 @@ TEST(Intersections, RefuseBadInput) {
   EXPECT_FALSE(intersections(plane, plane, Tolerance{0.0}));
   EXPECT_EQ(self_intersections(line, Tolerance{1e-9}).error().message,
             "self-intersections need a curve in R^2 or more, this one lives in R^1");
+  for (const double bad : {0.0, -1.0, std::nan(""), double(INFINITY)})
+    EXPECT_NE(self_intersections(plane, Tolerance{bad}).error().message.find("it must be finite and > 0"),
+              std::string::npos)
+        << bad;
+}
+
+// A curve of degree 0 is a point: it meets another curve where it lies on it
+// (within the tolerance), at the other curve's nearest parameter, whichever
+// of the two it is given as.
+TEST(Intersections, APointMeetsACurveWhereItLiesOnIt) {
+  const BezierCurve point = bezier({{0.25, 0.25}});
+  const BezierCurve diagonal = bezier({{0, 0}, {1, 1}});
+  for (const bool point_first : {true, false}) {
+    const auto hits = point_first ? intersections(point, diagonal, Tolerance{1e-9}).value()
+                                  : intersections(diagonal, point, Tolerance{1e-9}).value();
+    ASSERT_EQ(hits.size(), 1u) << point_first;
+    const Interval on_point = point_first ? hits[0].a : hits[0].b, on_line = point_first ? hits[0].b : hits[0].a;
+    EXPECT_EQ(on_point.lower, 0.0);
+    EXPECT_NEAR(on_line.lower, 0.25, 1e-15);
+    EXPECT_NEAR(hits[0].point[0], 0.25, 1e-15);
+  }
+  const BezierCurve off = bezier({{0.25, 0.5}});
+  EXPECT_TRUE(intersections(off, diagonal, Tolerance{1e-9}).value().empty());
 }
 
 }  // namespace
