@@ -998,11 +998,15 @@ bool is_joint(const BezierCurve& arriving, double s, const BezierCurve& leaving,
 /// found thousands, slowly; issue 42's curve_numbers fuzzer). Here the piece
 /// is cut at the turning points, the roots of x'(t), into monotone passes,
 /// and each two passes whose ranges of x share more than the tolerance make
-/// one overlap, its ends found by bisection on the monotone x. Returns no
-/// value when the piece is not such a line (or is rational), and the
-/// overlaps (none for a monotone line) when it is.
+/// one overlap, its ends found by bisection on the monotone x. A rational
+/// piece (positive weights: it lies in its control points' hull) has
+/// x(t) = X(t) / W(t) along the line, which turns where X' W - X W' (a
+/// polynomial of degree 2n - 1 in Bernstein form) changes sign. Returns no
+/// value when the piece is not such a line, and the overlaps (none for a
+/// monotone line) when it is.
 std::optional<std::vector<Hit>> line_fold_overlaps(const BezierCurve& piece, double tolerance) {
-  if (piece.is_rational()) return std::nullopt;
+  const std::span<const double> weights = piece.weights();
+  if (std::any_of(weights.begin(), weights.end(), [](double w) { return !(w > 0.0); })) return std::nullopt;
   const PointArray& control = piece.control_points();
   const Point origin(control[0].begin(), control[0].end());
   // The line: through P_0 and the control point farthest from it.
@@ -1028,15 +1032,32 @@ std::optional<std::vector<Hit>> line_fold_overlaps(const BezierCurve& piece, dou
     if (std::sqrt(off) > tolerance) return std::nullopt;  // the hull leaves the line's tolerance
     along[k] = x;
   }
-  // Turning points: the roots of x'(t) inside (0, 1).
+  // Turning points: the roots of x'(t) inside (0, 1) (of its numerator X' W - X W', rational).
   std::vector<double> slope(along.size() - 1);
-  for (std::size_t k = 0; k + 1 < along.size(); ++k) slope[k] = along[k + 1] - along[k];
+  if (piece.is_rational()) {
+    std::vector<double> x_homogeneous(along.size()), weight_slope(along.size() - 1);
+    for (std::size_t k = 0; k < along.size(); ++k) x_homogeneous[k] = weights[k] * along[k];
+    for (std::size_t k = 0; k + 1 < along.size(); ++k) {
+      slope[k] = x_homogeneous[k + 1] - x_homogeneous[k];
+      weight_slope[k] = weights[k + 1] - weights[k];
+    }
+    const std::vector<double> left = bernstein_product(slope, weights);
+    const std::vector<double> right = bernstein_product(x_homogeneous, weight_slope);
+    slope.resize(left.size());
+    for (std::size_t k = 0; k < left.size(); ++k) slope[k] = left[k] - right[k];
+  } else {
+    for (std::size_t k = 0; k + 1 < along.size(); ++k) slope[k] = along[k + 1] - along[k];
+  }
   std::vector<double> cuts{0.0};
   for (const BernsteinRoot& root : bernstein_roots(slope))
     if (root.t > 0.0 && root.t < 1.0 && root.multiplicity % 2 == 1) cuts.push_back(root.t);
   cuts.push_back(1.0);
   std::vector<Hit> overlaps;
-  const auto x_at = [&](double t) { return bernstein_value(along, t); };
+  std::vector<double> weighted(along.size());
+  for (std::size_t k = 0; k < along.size(); ++k) weighted[k] = weights.empty() ? along[k] : weights[k] * along[k];
+  const auto x_at = [&](double t) {
+    return weights.empty() ? bernstein_value(along, t) : bernstein_value(weighted, t) / bernstein_value(weights, t);
+  };
   // The parameter in [a, b] where the monotone x takes `value`: an end of the
   // pass when the value is the end's (a turning point, where bisection would
   // find it only to the square root of the rounding), else by bisection.

@@ -229,6 +229,25 @@ TEST(ModelJsonSurface, RefusesARaggedNet) {
             "m.json, models[0].control_points[1]: row 1 has 1 point, row 0 has 2 (a control net is rectangular)");
 }
 
+// Fields of the wrong shape: a net that is not rows, weights that are not
+// rows of numbers, knots that are not two lists, a blending that is not a
+// name (`make coverage` found these refusals without a test; docs/coverage.md).
+TEST(ModelJsonSurface, RefusesFieldsOfTheWrongShape) {
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": 5})"),
+            "m.json, control_points: expected an array of rows of points, found the number 5");
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": [[[0,0]], 7]})"),
+            "m.json, control_points[1]: expected a row (an array of points), found the number 7");
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": [[[0,0],[1,0]]], "weights": 2})"),
+            "m.json, weights: expected an array of rows of numbers, found the number 2");
+  EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": [[[0,0],[1,0]]], "weights": [[1, "a"]]})"),
+            "m.json, weights[0][1]: expected a number, found the string 'a'");
+  EXPECT_EQ(json_error(R"({"type": "bspline_surface", "degree": [1,1], "knots": [[0,0,1,1], 3],
+      "control_points": [[[0,0],[1,0]], [[0,1],[1,1]]]})"),
+            "m.json, knots[1]: expected an array of numbers, found the number 3");
+  EXPECT_EQ(json_error(R"({"type": "coons", "blending": 3, "boundaries": {}})"),
+            "m.json, blending: expected \"linear\" or \"cubic\", found the number 3");
+}
+
 TEST(ModelJsonSurface, RefusesBadNetsAndPoints) {
   EXPECT_EQ(json_error(R"({"type": "bezier_surface", "control_points": []})"),
             "m.json, control_points: " + test::refusal(ControlNet::make(0, 0, PointArray{})));

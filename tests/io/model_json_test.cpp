@@ -126,6 +126,8 @@ TEST(ModelJson, BadFieldsNameTheirPath) {
             "m.json, control_points[1]: expected a point (an array of numbers), found the number 3");
   EXPECT_EQ(json_error(R"({"type": "bezier", "control_points": {"x": 1}})"),
             "m.json, control_points: expected an array of points, found an object");
+  EXPECT_EQ(json_error(R"({"type": "piecewise_bezier", "pieces": 4})"),
+            "m.json, pieces: expected an array of pieces, found the number 4");
 }
 
 TEST(ModelJson, UnknownFieldsAreErrors) {

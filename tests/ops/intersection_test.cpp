@@ -192,6 +192,28 @@ TEST(SelfIntersections, OfALoopAndNoneAtACusp) {
 // Issue 42 (the curve_numbers fuzzer): a cubic on a line that turns back
 // covers stretches twice. The subdivision saw every pair of points on the two
 // passes as a tangency (thousands of them, seconds); the passes are overlaps.
+// Rational folds: y(t) = Y(t) / W(t) along the line turns where Y' W - Y W'
+// changes sign. Weights all equal change nothing (the turn stays at 2/3, as
+// above; issue 42's fuzzer found such a cubic taking 9.6 s); the quadratic
+// (0,0) (0,2) (0,0) with weights 1, 3, 1 is symmetric under t -> 1 - t, so it
+// turns at 1/2 and retraces itself.
+TEST(SelfIntersections, ARationalLineThatTurnsBackOverlapsItself) {
+  const BezierCurve equal_weights = bezier({{0, 0}, {0, 0}, {0, 2}, {0, 0}}, {5, 5, 5, 5});
+  const auto equal = self_intersections(equal_weights, Tolerance{1e-9}).value();
+  ASSERT_EQ(equal.size(), 1u);
+  EXPECT_EQ(equal[0].kind, IntersectionKind::overlap);
+  EXPECT_NEAR(equal[0].a.upper, 2.0 / 3.0, 1e-15);
+  EXPECT_NEAR(equal[0].b.upper, 2.0 / 3.0, 1e-15);
+  const BezierCurve symmetric = bezier({{0, 0}, {0, 2}, {0, 0}}, {1, 3, 1});
+  const auto folds = self_intersections(symmetric, Tolerance{1e-9}).value();
+  ASSERT_EQ(folds.size(), 1u);
+  EXPECT_EQ(folds[0].kind, IntersectionKind::overlap);
+  EXPECT_EQ(folds[0].a.lower, 0.0);
+  EXPECT_NEAR(folds[0].a.upper, 0.5, 1e-15);
+  EXPECT_EQ(folds[0].b.lower, 1.0);
+  EXPECT_NEAR(folds[0].b.upper, 0.5, 1e-15);
+}
+
 // A closed curve that rests at its closing point (five repeated control points
 // at each end) and loops once: x has control values 0 x5, 2, -12, 12, -2, 0 x5,
 // so x(t) = 2574 t^5 (1 - t)^5 (1 - 2t)(9t^2 - 9t + 1), and the mirror symmetry
