@@ -39,6 +39,11 @@ CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON) -DCASTELJAU_WERROR=ON
 # -O2 builds of `make test` do not meet), and benchmarks are not what CI gates.
 BENCH_CMAKE_FLAGS := -DPython_EXECUTABLE=$(PYTHON)
 
+# $(call pytest_on,TREE): pytest (with $(PYTHON)) on TREE's Python module and
+# CLI, the arguments to follow; `make test`, python-asan and coverage use it.
+pytest_on = CASTELJAU_CLI=$(CURDIR)/$(1)/casteljau CASTELJAU_PYTHONPATH=$(CURDIR)/$(1)/python \
+  $(PYTHON) -m pytest -q -p no:cacheprovider -n $(JOBS)
+
 # $(call timed,PHASE,COMMAND): runs COMMAND, prints its wall time and adds it
 # to out/phases.tsv, the table `make test` and `make check` end with.
 define timed
@@ -130,15 +135,14 @@ fuzz: fuzz-build
 
 # The Python module built with AddressSanitizer + UBSan (build-asan/python)
 # and the pytest suite run on it, the sanitizer runtimes preloaded into
-# python3 (docs/python.md): the numpy boundary checked too. Not part of `make
+# /usr/bin/python3 (docs/python.md): the numpy boundary checked too. Not part of `make
 # test` (the instrumented module and its suite take minutes); leaks are not
 # reported (CPython's own allocations would drown ours).
 python-asan: asan
 	cmake --build --preset asan -j $(JOBS) --target casteljau_python
 	LD_PRELOAD="$$(g++ -print-file-name=libasan.so):$$(g++ -print-file-name=libubsan.so)" \
 	  ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-	  CASTELJAU_CLI=$(CURDIR)/build-asan/casteljau CASTELJAU_PYTHONPATH=$(CURDIR)/build-asan/python \
-	  $(PYTHON) -m pytest -q -p no:cacheprovider -n $(JOBS) tests/python
+	  $(call pytest_on,build-asan) tests/python
 
 # Coverage (docs/coverage.md): the default tree's suites (C++, CLI, pytest)
 # run in build-coverage/ (-O0, gcov's counters in our objects only), read by
@@ -153,8 +157,7 @@ coverage: deps
 	cmake --build --preset coverage -j $(JOBS)
 	find build-coverage -name '*.gcda' -delete
 	cd build-coverage && ctest --output-on-failure -j $(JOBS) -LE python -E '^package\.'
-	CASTELJAU_CLI=$(CURDIR)/build-coverage/casteljau CASTELJAU_PYTHONPATH=$(CURDIR)/build-coverage/python \
-	  $(PYTHON) -m pytest -q -p no:cacheprovider -n $(JOBS) tests/python
+	$(call pytest_on,build-coverage) tests/python
 	rm -rf out/coverage && mkdir -p out/coverage
 	gcovr --root . --object-directory build-coverage --filter 'src/' --filter 'include/' --filter 'cli/' \
 	  --filter 'python/' --exclude-throw-branches --exclude-unreachable-branches -j $(JOBS) \
@@ -178,7 +181,7 @@ define default_suites
 	@echo "== C++ tests (build/) =="
 	$(call timed,C++ tests build/,cd build && ctest --output-on-failure -j $(JOBS) -LE 'python$(1)')
 	@echo "== Python tests (pytest with $(PYTHON): the module in build/python, the CLI build/casteljau, against scipy) =="
-	$(call timed,pytest,CASTELJAU_CLI=$(CURDIR)/build/casteljau CASTELJAU_PYTHONPATH=$(CURDIR)/build/python $(PYTHON) -m pytest -q -p no:cacheprovider -n $(JOBS) --durations=10 tests/python)
+	$(call timed,pytest,$(call pytest_on,build) --durations=10 tests/python)
 endef
 
 # Every test: what CI runs. `make check` is the inner loop.
@@ -239,4 +242,4 @@ bench-publish:
 	$(PYTHON) bench/report.py readme --results docs/RESULTS.md --readme README.md
 
 clean:
-	rm -rf build build-asan build-wasm build-fuzz build-bench out
+	rm -rf build build-asan build-wasm build-fuzz build-coverage build-bench out
