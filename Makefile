@@ -122,15 +122,20 @@ wasm: deps
 # UBSan in build-fuzz/. `make test` runs each for a few seconds on its seeds;
 # `make fuzz` for FUZZ_SECONDS each (default 60), growing out/fuzz/corpus/
 # from run to run; what a fuzzer finds lands in out/fuzz/findings/NAME/.
+# `make fuzz FUZZ_MODE=campaign` keeps going past findings (libFuzzer's fork
+# mode) for the long runs; FUZZ_TARGETS="dxf font" runs some targets only.
 FUZZ_SECONDS ?= 60
+FUZZ_MODE ?=
+FUZZ_TARGETS ?= $(patsubst build-fuzz/tests/fuzz/%_fuzzer,%,$(wildcard build-fuzz/tests/fuzz/*_fuzzer))
 fuzz-build: deps
 	$(call timed,configure build-fuzz/,cmake --preset fuzz $(CMAKE_FLAGS) >/dev/null)
 	$(call timed,build build-fuzz/,cmake --build --preset fuzz -j $(JOBS))
 
 fuzz: fuzz-build
-	@set -o pipefail; for fuzzer in build-fuzz/tests/fuzz/*_fuzzer; do \
-	  name=$$(basename $$fuzzer _fuzzer); echo "== fuzz $$name ($(FUZZ_SECONDS) s)"; \
-	  bash tests/fuzz/run.sh $$fuzzer $$name $(FUZZ_SECONDS) $(CURDIR)/out/fuzz 2>&1 | grep -E '^stat::|^#[0-9]+ *DONE|ERROR|SUMMARY|artifact' || exit 1; \
+	@set -o pipefail; for name in $(FUZZ_TARGETS); do \
+	  echo "== fuzz $$name ($(FUZZ_SECONDS) s)"; \
+	  bash tests/fuzz/run.sh build-fuzz/tests/fuzz/$${name}_fuzzer $$name $(FUZZ_SECONDS) $(CURDIR)/out/fuzz $(FUZZ_MODE) 2>&1 \
+	    | grep -E '^stat::|^#[0-9]+ *DONE|ERROR|SUMMARY|artifact|INFO: exiting' || exit 1; \
 	done
 
 # The Python module built with AddressSanitizer + UBSan (build-asan/python)

@@ -228,9 +228,14 @@ Expected<Model> read_arc(const Entity& e, bool full_circle) {
     auto a = e.number(50, 0.0), b = e.number(51, 360.0);
     if (!a) return a.error();
     if (!b) return b.error();
-    double degrees = std::fmod(*b - *a, 360.0);
+    // Each angle reduced on its own first (std::fmod is exact): the
+    // difference of 4e21 and 210 degrees keeps nothing of the 210, and the
+    // fuzzer's arc of 4e21 degrees became four pieces running out and back
+    // along one chord.
+    const double from = std::fmod(*a, 360.0), to = std::fmod(*b, 360.0);
+    double degrees = std::fmod(to - from, 360.0);
     if (degrees <= 0.0) degrees += 360.0;  // ARC runs counter-clockwise from 50 to 51
-    start = *a * std::numbers::pi / 180.0;
+    start = from * std::numbers::pi / 180.0;
     sweep = degrees * std::numbers::pi / 180.0;
   }
   auto arc = ocs_arc(*ocs, *centre, *radius, start, sweep);
@@ -254,9 +259,11 @@ Expected<Model> read_ellipse(const Entity& e) {
   // Minor axis: ratio |major| along N x major (DXF's ELLIPSE, counter-clockwise about N).
   const Vec3d n = (1.0 / normal_length) * *normal;
   const Vec3d minor = *ratio * cross(n, *major);
-  double sweep = std::fmod(*end - *start, 2.0 * std::numbers::pi);
+  // Each parameter reduced on its own first, as ARC's angles are.
+  const double from = std::fmod(*start, 2.0 * std::numbers::pi), to = std::fmod(*end, 2.0 * std::numbers::pi);
+  double sweep = std::fmod(to - from, 2.0 * std::numbers::pi);
   if (sweep <= 0.0) sweep += 2.0 * std::numbers::pi;
-  auto unit = sweep >= 2.0 * std::numbers::pi ? make_circle(0.0, 0.0, 1.0) : make_arc(0.0, 0.0, 1.0, *start, sweep);
+  auto unit = sweep >= 2.0 * std::numbers::pi ? make_circle(0.0, 0.0, 1.0) : make_arc(0.0, 0.0, 1.0, from, sweep);
   if (!unit) return unit.error();
   return as_model(mapped(*unit, *centre, *major, minor));
 }

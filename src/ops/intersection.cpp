@@ -20,6 +20,7 @@
 #include "casteljau/ops/closest_point.hpp"
 #include "casteljau/ops/tolerance.hpp"
 #include "bernstein_columns.hpp"
+#include "line_passes.hpp"
 
 namespace casteljau {
 namespace {
@@ -753,12 +754,42 @@ bool continue_one_another(const BezierCurve& a, const BezierCurve& b, SharedPoin
   return checked > 0;
 }
 
+/// A pass contact (line_passes.hpp) as a hit: an overlap, or a point where
+/// two pieces on one line touch (a tangency of order 0, as shared_hit makes).
+Hit hit_of(const detail::PassContact& contact) {
+  if (!contact.overlap) return {contact.s, contact.t, IntersectionKind::tangent, 0};
+  Hit overlap{contact.s, contact.t, IntersectionKind::overlap, 0};
+  overlap.s_end = contact.s_end;
+  overlap.t_end = contact.t_end;
+  return overlap;
+}
+
+/// The contacts of two pieces that lie within the tolerance of one line, as
+/// their monotone passes meet (line_passes.hpp); no value when they do not.
+/// Where two passes run over one stretch every pair of their points is a
+/// "tangency" to the searches of the general case, thousands of them, slowly
+/// (a DXF arc whose pieces each run out and back along one chord: 84 hits in
+/// 4.2 s; issue 42's dxf fuzzer). In the plane it is asked only of two pieces
+/// of one algebraic curve (lines whose slopes differ by 2^-40 still cross
+/// once); in space the overlap test is the tolerance's already.
+std::optional<std::vector<Hit>> hits_on_one_line(const BezierCurve& a, const BezierCurve& b, double tolerance) {
+  auto line_a = detail::line_passes(a, tolerance);
+  if (!line_a) return std::nullopt;
+  auto line_b = detail::line_passes(b, tolerance, &*line_a);
+  if (!line_b) return std::nullopt;
+  std::vector<Hit> hits;
+  for (const detail::PassContact& contact : detail::pass_contacts(*line_a, *line_b, tolerance))
+    hits.push_back(hit_of(contact));
+  return hits;
+}
+
 /// The intersections of two pieces in R^d, d >= 3: the overlap where each
 /// traces the other between shared points, a tangency of order 0 where one
 /// continues the other, and the points where they come within the tolerance
 /// (subdivision of their boxes and Gauss-Newton on the nearest pair),
 /// classified by their tangents.
 std::vector<Hit> space_piece_hits(const BezierCurve& a, const BezierCurve& b, double tolerance) {
+  if (auto on_line = hits_on_one_line(a, b, tolerance)) return *on_line;
   std::vector<Hit> hits;
   std::vector<SharedPoint> pairs = ends_on_each_other(a, b, tolerance);
   const bool overlap = pairs.size() >= 2 && pairs.back().s - pairs.front().s > kIntersectionJointSlack &&
@@ -812,6 +843,7 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
   }
   const double noise = tolerances::kRoundingSlack * static_cast<double>(p.value.size()) * 4.0 * largest_magnitude;
   if (largest <= noise) {
+    if (auto on_line = hits_on_one_line(a, b, tolerance)) return *on_line;
     // One algebraic curve: the end points of each piece that lie on the other.
     const std::vector<SharedPoint> pairs = ends_on_each_other(implicit, other, tolerance);
     // Crossings where the algebraic curve passes twice through a point (a
@@ -991,104 +1023,6 @@ bool is_joint(const BezierCurve& arriving, double s, const BezierCurve& leaving,
   return lengths > 0.0 && dot(in, out) > tolerances::kJointReversalCosine * lengths;
 }
 
-/// A polynomial piece within `tolerance` of a straight line that turns back
-/// along it (a fold: x(t) along the line not monotone) covers stretches of
-/// the line twice: those are its self-overlaps, which the subdivision below
-/// cannot see (every pair of points on the two passes is a "tangency": it
-/// found thousands, slowly; issue 42's curve_numbers fuzzer). Here the piece
-/// is cut at the turning points, the roots of x'(t), into monotone passes,
-/// and each two passes whose ranges of x share more than the tolerance make
-/// one overlap, its ends found by bisection on the monotone x. A rational
-/// piece (positive weights: it lies in its control points' hull) has
-/// x(t) = X(t) / W(t) along the line, which turns where X' W - X W' (a
-/// polynomial of degree 2n - 1 in Bernstein form) changes sign. Returns no
-/// value when the piece is not such a line, and the overlaps (none for a
-/// monotone line) when it is.
-std::optional<std::vector<Hit>> line_fold_overlaps(const BezierCurve& piece, double tolerance) {
-  const std::span<const double> weights = piece.weights();
-  if (std::any_of(weights.begin(), weights.end(), [](double w) { return !(w > 0.0); })) return std::nullopt;
-  const PointArray& control = piece.control_points();
-  const Point origin(control[0].begin(), control[0].end());
-  // The line: through P_0 and the control point farthest from it.
-  Point direction;
-  double farthest = 0.0;
-  for (std::size_t k = 1; k < control.size(); ++k) {
-    const Point p(control[k].begin(), control[k].end());
-    if (const double d = distance(p, origin); d > farthest) {
-      farthest = d;
-      direction = p;
-    }
-  }
-  if (farthest <= tolerance) return std::nullopt;  // a point: left out by the caller
-  for (std::size_t c = 0; c < direction.size(); ++c) direction[c] = (direction[c] - origin[c]) / farthest;
-  std::vector<double> along(control.size());
-  for (std::size_t k = 0; k < control.size(); ++k) {
-    double x = 0.0, off = 0.0;
-    for (std::size_t c = 0; c < direction.size(); ++c) x += (control[k][c] - origin[c]) * direction[c];
-    for (std::size_t c = 0; c < direction.size(); ++c) {
-      const double r = control[k][c] - origin[c] - x * direction[c];
-      off += r * r;
-    }
-    if (std::sqrt(off) > tolerance) return std::nullopt;  // the hull leaves the line's tolerance
-    along[k] = x;
-  }
-  // Turning points: the roots of x'(t) inside (0, 1) (of its numerator X' W - X W', rational).
-  std::vector<double> slope(along.size() - 1);
-  if (piece.is_rational()) {
-    std::vector<double> x_homogeneous(along.size()), weight_slope(along.size() - 1);
-    for (std::size_t k = 0; k < along.size(); ++k) x_homogeneous[k] = weights[k] * along[k];
-    for (std::size_t k = 0; k + 1 < along.size(); ++k) {
-      slope[k] = x_homogeneous[k + 1] - x_homogeneous[k];
-      weight_slope[k] = weights[k + 1] - weights[k];
-    }
-    const std::vector<double> left = bernstein_product(slope, weights);
-    const std::vector<double> right = bernstein_product(x_homogeneous, weight_slope);
-    slope.resize(left.size());
-    for (std::size_t k = 0; k < left.size(); ++k) slope[k] = left[k] - right[k];
-  } else {
-    for (std::size_t k = 0; k + 1 < along.size(); ++k) slope[k] = along[k + 1] - along[k];
-  }
-  std::vector<double> cuts{0.0};
-  for (const BernsteinRoot& root : bernstein_roots(slope))
-    if (root.t > 0.0 && root.t < 1.0 && root.multiplicity % 2 == 1) cuts.push_back(root.t);
-  cuts.push_back(1.0);
-  std::vector<Hit> overlaps;
-  std::vector<double> weighted(along.size());
-  for (std::size_t k = 0; k < along.size(); ++k) weighted[k] = weights.empty() ? along[k] : weights[k] * along[k];
-  const auto x_at = [&](double t) {
-    return weights.empty() ? bernstein_value(along, t) : bernstein_value(weighted, t) / bernstein_value(weights, t);
-  };
-  // The parameter in [a, b] where the monotone x takes `value`: an end of the
-  // pass when the value is the end's (a turning point, where bisection would
-  // find it only to the square root of the rounding), else by bisection.
-  const auto solve = [&](double a, double b, double value) {
-    if (x_at(a) == value) return a;
-    if (x_at(b) == value) return b;
-    const bool rising = x_at(b) >= x_at(a);
-    for (int i = 0; i < 80 && b - a > 0.0; ++i) {
-      const double m = 0.5 * (a + b);
-      if ((x_at(m) < value) == rising) a = m;
-      else b = m;
-    }
-    return 0.5 * (a + b);
-  };
-  for (std::size_t p = 0; p + 1 < cuts.size(); ++p) {
-    for (std::size_t q = p + 1; q + 1 < cuts.size(); ++q) {
-      const double p0 = x_at(cuts[p]), p1 = x_at(cuts[p + 1]), q0 = x_at(cuts[q]), q1 = x_at(cuts[q + 1]);
-      const double low = std::max(std::min(p0, p1), std::min(q0, q1));
-      const double high = std::min(std::max(p0, p1), std::max(q0, q1));
-      if (high - low <= tolerance) continue;  // they touch (at a turning point) or not at all
-      const double s_low = solve(cuts[p], cuts[p + 1], low), s_high = solve(cuts[p], cuts[p + 1], high);
-      const double t_low = solve(cuts[q], cuts[q + 1], low), t_high = solve(cuts[q], cuts[q + 1], high);
-      Hit overlap{std::min(s_low, s_high), s_low < s_high ? t_low : t_high, IntersectionKind::overlap, 0};
-      overlap.s_end = std::max(s_low, s_high);
-      overlap.t_end = s_low < s_high ? t_high : t_low;
-      overlaps.push_back(overlap);
-    }
-  }
-  return overlaps;
-}
-
 Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tolerance tolerance) {
   if (curve.dimension() < 2)
     return Error{"self-intersections need a curve in R^2 or more, this one lives in R^" +
@@ -1116,8 +1050,9 @@ Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tol
     // Inside piece i: a line folding back on itself overlaps itself; any
     // other piece has its injective parts tried against each other.
     std::vector<Hit> inside;
-    if (auto folds = line_fold_overlaps(piece, tolerance.distance)) {
-      inside = std::move(*folds);
+    if (auto line = detail::line_passes(piece, tolerance.distance)) {
+      for (const detail::PassContact& fold : detail::self_overlaps(*line, tolerance.distance))
+        inside.push_back(hit_of(fold));
     } else {
       std::vector<Part> parts;
       injective_parts(piece, {0.0, 1.0}, 0, parts);

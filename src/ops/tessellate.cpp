@@ -98,7 +98,8 @@ std::string rounded_up(double x) {
 }
 
 /// Refuses a patch that jumps across one of its knot lines (an interior knot
-/// of multiplicity degree + 1: the two sides are separate surfaces). No cell
+/// of multiplicity degree + 1: the two sides are separate surfaces; or a
+/// weight 10^10 times its neighbours', continuous only in exact arithmetic). No cell
 /// that ends at the line can meet the tolerance, since evaluation there takes
 /// the other side's value: the quadtree was refined to its finest cells along
 /// the whole line until the triangle limit stopped it, 48 s later (issue 42's
@@ -122,8 +123,10 @@ Status check_continuous_patches(std::span<const SurfaceView> patches, double tol
           const double jump = distance(before, on), smooth = distance(on, after);
           if (jump > tolerance && jump > 100.0 * smooth) {
             return Error{"patch " + std::to_string(p) + " is not continuous across " + (along_u ? "u" : "v") +
-                         " = " + detail::number_text(knots[k]) + " (a knot of multiplicity degree + 1 there): it jumps by " +
-                         detail::number_text(jump) + "; split it at that knot and tessellate the two parts"};
+                         " = " + detail::number_text(knots[k]) + ": it jumps by " + detail::number_text(jump) +
+                         " within 2^-30 of its knot span (a knot of multiplicity degree + 1 there, or weights many "
+                         "orders of magnitude apart, make such a jump); split it at that knot and tessellate the two "
+                         "parts, or bring its weights closer"};
           }
         }
       }
@@ -207,7 +210,11 @@ Expected<TriangleMesh> tessellate_patches(const std::vector<Patch>& patches, con
     before += patch_cells;
     const tessellation::RefinementProgress stage{progress, from, kRefinementShare * before / estimated, shares};
     auto refined = tessellation::refine(patches[p], tolerance, cells[p], cell_total, stage);
-    if (!refined) return refined.error();
+    if (!refined) {
+      Error error = refined.error();
+      if (error.kind != ErrorKind::limit) error.message = "patch " + std::to_string(p) + ": " + error.message;
+      return error;
+    }
     cell_total += cells[p].size();
   }
   MeshAssembly assembly(patches, edges, cells);

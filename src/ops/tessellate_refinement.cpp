@@ -34,7 +34,7 @@ Status check_cell_count(std::size_t cells, double tolerance) {
   return {};
 }
 
-bool cell_needs_split(const Patch& patch, const Cell& cell, double tolerance, bool& in_u, bool& in_v) {
+CellTest test_cell(const Patch& patch, const Cell& cell, double tolerance) {
   const double ua = patch.u_of(cell.u0), ub = patch.u_of(cell.u1);
   const double va = patch.v_of(cell.v0), vb = patch.v_of(cell.v1);
   std::array<double, kGrid> us{}, vs{};
@@ -88,36 +88,54 @@ bool cell_needs_split(const Patch& patch, const Cell& cell, double tolerance, bo
     bend_u = std::max(bend_u, norm(at(mid, k) - chord_u));
     bend_v = std::max(bend_v, norm(at(k, mid) - chord_v));
   }
-  // The box of the samples: a cell flat at the tolerance's scale is not split for its normals.
-  Vec3 low = at(0, 0), high = low;
-  for (int k = 0; k < kGrid * kGrid; ++k) {
-    for (int c = 0; c < 3; ++c) {
-      low[c] = std::min(low[c], grid[3 * k + c]);
-      high[c] = std::max(high[c], grid[3 * k + c]);
+  // The normals' turn is compared along each edge of the cell whose samples
+  // spread over more than the flat scale. Along an edge that is flat at the
+  // tolerance's scale (a pole, a side pulled to one point by a huge weight)
+  // the normal is undefined or meaningless and may turn at random: counting
+  // it would halve such cells to the finest level along the whole edge
+  // (a fuzzed sphere with a weight of 7e13: ten million triangles, 49 s).
+  // The distance test still applies to every cell.
+  const double flat = tolerances::kMeshFlatCellFraction * tolerance;
+  const auto edge_is_flat = [&](bool along_v, int fixed) {
+    Vec3 low = along_v ? at(fixed, 0) : at(0, fixed), high = low;
+    for (int k = 1; k < kGrid; ++k) {
+      const Vec3 q = along_v ? at(fixed, k) : at(k, fixed);
+      for (int c = 0; c < 3; ++c) {
+        low[c] = std::min(low[c], q[c]);
+        high[c] = std::max(high[c], q[c]);
+      }
     }
-  }
-  const bool flat = norm(high - low) <= tolerances::kMeshFlatCellFraction * tolerance;
+    return norm(high - low) <= flat;
+  };
+  const bool flat_v0 = edge_is_flat(false, 0), flat_v1 = edge_is_flat(false, last);  // edges v = va, v = vb
+  const bool flat_u0 = edge_is_flat(true, 0), flat_u1 = edge_is_flat(true, last);    // edges u = ua, u = ub
   bool turns_u = false, turns_v = false;
-  if (!flat) {
+  if (!(flat_v0 && flat_v1 && flat_u0 && flat_u1)) {
     const Vec3 n00 = to_vec3(patch.surface.normal_at(ua, va)), n10 = to_vec3(patch.surface.normal_at(ub, va));
     const Vec3 n01 = to_vec3(patch.surface.normal_at(ua, vb)), n11 = to_vec3(patch.surface.normal_at(ub, vb));
-    turns_u = std::max(turn(n00, n10), turn(n01, n11)) > tolerances::kMeshMaxNormalTurn;
-    turns_v = std::max(turn(n00, n01), turn(n10, n11)) > tolerances::kMeshMaxNormalTurn;
+    const auto turns = [](bool edge_flat, const Vec3& a, const Vec3& b) {
+      return !edge_flat && turn(a, b) > tolerances::kMeshMaxNormalTurn;
+    };
+    turns_u = turns(flat_v0, n00, n10) || turns(flat_v1, n01, n11);
+    turns_v = turns(flat_u0, n00, n01) || turns(flat_u1, n10, n11);
   }
   const bool too_far = error > tolerances::kMeshSampledDeviationFraction * tolerance;
-  if (!too_far && !turns_u && !turns_v) return false;
-  in_u = turns_u;
-  in_v = turns_v;
+  CellTest test;
+  test.error = error;
+  if (!too_far && !turns_u && !turns_v) return test;
+  test.split = true;
+  test.in_u = turns_u;
+  test.in_v = turns_v;
   if (too_far) {
     const double bend = std::max(bend_u, bend_v);
     if (bend < 0.25 * error) {
-      in_u = in_v = true;  // a twist: neither mid-line explains the error
+      test.in_u = test.in_v = true;  // a twist: neither mid-line explains the error
     } else {
-      in_u = in_u || bend_u >= 0.5 * bend;
-      in_v = in_v || bend_v >= 0.5 * bend;
+      test.in_u = test.in_u || bend_u >= 0.5 * bend;
+      test.in_v = test.in_v || bend_v >= 0.5 * bend;
     }
   }
-  return true;
+  return test;
 }
 
 Status refine(const Patch& patch, double tolerance, std::vector<Cell>& accepted, std::size_t other_cells,
@@ -128,8 +146,25 @@ Status refine(const Patch& patch, double tolerance, std::vector<Cell>& accepted,
   while (!pending.empty()) {
     const Cell cell = pending.back();
     pending.pop_back();
-    bool in_u = false, in_v = false;
-    if (cell_needs_split(patch, cell, tolerance, in_u, in_v) && split(cell, in_u, in_v, pending)) {
+    const CellTest test = test_cell(patch, cell, tolerance);
+    if (test.split) {
+      // A cell at the quadtree's depth limit in a direction it must be halved
+      // in: the surface moves by more than the tolerance between parameters
+      // 2^-40 of a knot span apart, continuous only in exact arithmetic (a
+      // weight 10^13 times its neighbours' does this). Halving the other
+      // direction instead would not help: it once made ten million cells
+      // along such an edge before the triangle limit refused them (49 s).
+      const bool stuck_u = test.in_u && cell.u1 - cell.u0 <= 1, stuck_v = test.in_v && cell.v1 - cell.v0 <= 1;
+      if (stuck_u || stuck_v) {
+        const double step = stuck_u ? patch.u_of(cell.u1) - patch.u_of(cell.u0) : patch.v_of(cell.v1) - patch.v_of(cell.v0);
+        return Error{"the surface cannot be followed by triangles near (u, v) = (" +
+                     detail::number_text(patch.u_of(cell.u0)) + ", " + detail::number_text(patch.v_of(cell.v0)) +
+                     "): it departs by " + detail::number_text(test.error) + " from flat within a parameter step of " +
+                     detail::number_text(step) + " in " + (stuck_u ? "u" : "v") +
+                     ", continuous only in exact arithmetic (look for weights or control points many orders of "
+                     "magnitude apart)"};
+      }
+      split(cell, test.in_u, test.in_v, pending);
       if (auto counted = check_cell_count(other_cells + accepted.size() + pending.size(), tolerance); !counted) {
         return counted;
       }

@@ -6,10 +6,12 @@
 // parameters must be within tolerances::kMeshSampledDeviationFraction x
 // tolerance of the fan of four triangles from the cell's centre to its
 // corners, and the unit normals at its corners must turn by at most
-// tolerances::kMeshMaxNormalTurn (so that sampling can be trusted). A cell
-// that fails is halved in u, in v or both: in the direction(s) whose mid-line
-// bends most (a cylinder is cut across its axis only), both when the error is
-// a twist (z = uv).
+// tolerances::kMeshMaxNormalTurn along every edge that is not flat at the
+// tolerance's scale (so that sampling can be trusted). A cell that fails is
+// halved in u, in v or both: in the direction(s) whose mid-line bends most (a
+// cylinder is cut across its axis only), both when the error is a twist
+// (z = uv). A cell that must be halved in a direction where it is already
+// at the quadtree's depth limit is refused with where it is.
 //
 // The triangle check (step 6): every assembled triangle, neighbours' vertices
 // included, is sampled (edge midpoints, centroid, three inner points) against
@@ -28,8 +30,15 @@ namespace casteljau::tessellation {
 /// gives at least two triangles.
 Status check_cell_count(std::size_t cells, double tolerance);
 
-/// The cell test; when the cell fails, true and the directions to halve it in.
-bool cell_needs_split(const Patch& patch, const Cell& cell, double tolerance, bool& in_u, bool& in_v);
+/// The verdict of the cell test on one cell.
+struct CellTest {
+  bool split = false;              ///< the cell fails: halve it
+  bool in_u = false, in_v = false;  ///< in which direction(s)
+  double error = 0.0;              ///< the sampled distance to its fan of triangles
+};
+
+/// The cell test (step 2).
+CellTest test_cell(const Patch& patch, const Cell& cell, double tolerance);
 
 /// Where refine() reports its progress: the part [from, to] of the whole
 /// work, shared among the patch's roots (Patch::roots() order) in proportion

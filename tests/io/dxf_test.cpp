@@ -10,6 +10,7 @@
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -73,6 +74,28 @@ TEST(DxfRead, ArcsRunCounterClockwiseFromStartToEndAngle) {
   const CurveView crossing = curve_view(drawing.curves[1].curve);
   expect_point(point_at(crossing, 0.0), {0, -1});
   expect_point(point_at(crossing, 1.0), {std::sqrt(0.5), std::sqrt(0.5)});
+}
+
+// Issue 42 (the dxf fuzzer): an ARC from 4e21 to 210 degrees. The sweep was
+// the remainder of their difference, in which 210 is lost to rounding; the
+// start angle in radians, 7e19, kept nothing either: four pieces each running
+// out and back along one chord (and 4 s in the self-intersection search).
+// Each angle is reduced modulo 360 on its own, exactly.
+TEST(DxfRead, HugeArcAnglesAreReducedExactly) {
+  // 45 * 2^63 degrees is 2^60 turns: the arc runs from 0 to 90 degrees.
+  const double turns = std::ldexp(45.0, 63);
+  const auto drawing = read_dxf(dxf(fmt::format("0\nARC\n10\n0\n20\n0\n40\n1\n50\n{}\n51\n90\n"
+                                                  "0\nELLIPSE\n10\n0\n20\n0\n11\n2\n21\n0\n40\n0.5\n41\n{}\n42\n{}\n",
+                                                  turns, 1e21 * std::numbers::pi, 1e21 * std::numbers::pi)));
+  ASSERT_EQ(drawing.curves.size(), 2u);
+  const CurveView quarter = curve_view(drawing.curves[0].curve);
+  expect_point(point_at(quarter, 0.0), {1, 0});
+  expect_point(point_at(quarter, 1.0), {0, 1});
+  // Equal start and end parameters, however large: the whole ellipse.
+  const CurveView whole = curve_view(drawing.curves[1].curve);
+  const Point start = point_at(whole, 0.0), end = point_at(whole, 1.0);
+  EXPECT_NEAR(std::hypot(start[0] - end[0], start[1] - end[1]), 0.0, 1e-15);
+  EXPECT_NEAR(point_at(whole, 0.5)[0], -start[0], 1e-14);  // the opposite point halfway
 }
 
 TEST(DxfRead, ExtrusionDownwardsMirrorsX) {
@@ -144,6 +167,77 @@ TEST(DxfRead, SplinesWithFitPointsOnlyPassThroughThem) {
   const auto& spline = std::get<BSplineCurve>(drawing.curves.at(0).curve);
   expect_point(point_at(spline, spline.knots().front()), {0, 0});
   expect_point(point_at(spline, spline.knots().back()), {6, -1}, 1e-13);
+}
+
+// A fit-point spline in space with both end tangents (groups 11/21/31,
+// 12/22/32, 13/23/33): the cubic through the fit points at their chord-length
+// parameters (worked here from the points), leaving along the start tangent
+// and arriving along the end tangent, each scaled to the total chord length.
+TEST(DxfRead, SplinesWithFitPointsAndEndTangentsInSpace) {
+  const std::vector<std::array<double, 3>> fit = {{0, 0, 0}, {1, 2, 1}, {3, 3, 0}, {5, 1, 2}, {6, -1, 1}};
+  std::string entity = "0\nSPLINE\n71\n3\n74\n5\n12\n0\n22\n3\n32\n4\n13\n2\n23\n0\n33\n0\n";
+  for (const auto& q : fit) entity += fmt::format("11\n{}\n21\n{}\n31\n{}\n", q[0], q[1], q[2]);
+  const auto drawing = read_dxf(dxf(entity));
+  const auto& spline = std::get<BSplineCurve>(drawing.curves.at(0).curve);
+  std::vector<double> chords{0.0};
+  for (std::size_t i = 1; i < fit.size(); ++i)
+    chords.push_back(chords.back() + std::hypot(fit[i][0] - fit[i - 1][0], fit[i][1] - fit[i - 1][1],
+                                                fit[i][2] - fit[i - 1][2]));
+  const double total = chords.back();
+  for (std::size_t i = 0; i < fit.size(); ++i)
+    expect_point(point_at(spline, chords[i] / total), {fit[i][0], fit[i][1], fit[i][2]}, 1e-13);
+  // (0, 3, 4) has length 5, (2, 0, 0) length 2: unit directions times the chord length.
+  expect_point(derivative_at(spline, 0.0, 1), {0, 0.6 * total, 0.8 * total}, 1e-12);
+  expect_point(derivative_at(spline, 1.0, 1), {total, 0, 0}, 1e-12);
+}
+
+// Every number every entity reads is checked: a value that is not a number
+// in any of its groups makes that entity a problem naming the entity, the
+// line and the group, and the drawing keeps its other entities.
+TEST(DxfRead, EveryNumberOfEveryEntityIsCheckedAndNamed) {
+  const std::vector<std::string> entities = {
+      "0\nLINE\n10\n0\n20\n0\n30\n0\n11\n1\n21\n1\n31\n0\n",
+      "0\nCIRCLE\n10\n1\n20\n2\n30\n0\n40\n3\n",
+      "0\nARC\n10\n1\n20\n2\n30\n0\n40\n3\n50\n10\n51\n80\n",
+      "0\nELLIPSE\n10\n0\n20\n0\n30\n0\n11\n4\n21\n0\n31\n0\n210\n0\n220\n0\n230\n1\n40\n0.5\n41\n0\n42\n1\n",
+      "0\nLWPOLYLINE\n38\n0\n70\n1\n10\n0\n20\n0\n42\n0.5\n10\n4\n20\n0\n10\n4\n20\n3\n",
+      "0\nPOLYLINE\n66\n1\n70\n0\n10\n0\n20\n0\n30\n0\n0\nVERTEX\n70\n0\n10\n1\n20\n1\n42\n0.25\n"
+      "0\nVERTEX\n70\n0\n10\n3\n20\n2\n0\nSEQEND\n",
+      "0\nSPLINE\n70\n8\n71\n1\n40\n0\n40\n0\n40\n1\n40\n1\n41\n1\n41\n2\n10\n0\n20\n0\n30\n0\n10\n1\n20\n1\n30\n0\n",
+      "0\nSPLINE\n71\n3\n11\n0\n21\n0\n31\n0\n11\n1\n21\n2\n31\n0\n11\n3\n21\n3\n31\n1\n"
+      "12\n1\n22\n0\n32\n0\n13\n1\n23\n0\n33\n0\n"};
+  const std::string other = "0\nLINE\n10\n7\n20\n7\n11\n8\n21\n8\n";
+  int checked = 0;
+  for (const std::string& entity : entities) {
+    ASSERT_EQ(read_dxf(dxf(entity)).curves.size(), 1u) << entity;  // as written, it reads
+    // Each value line of a numeric group, in turn, replaced by "x".
+    std::vector<std::string> lines;
+    for (std::size_t start = 0; start < entity.size();) {
+      const std::size_t end = entity.find('\n', start);
+      lines.push_back(entity.substr(start, end - start));
+      start = end + 1;
+    }
+    for (std::size_t i = 0; i + 1 < lines.size(); i += 2) {
+      const int code = std::stoi(lines[i]);
+      if (code == 0 || code == 66) continue;  // 66 ("vertices follow") is not read: the VERTEX entities say it
+      std::string broken;
+      for (std::size_t k = 0; k < lines.size(); ++k) broken += (k == i + 1 ? std::string("x") : lines[k]) + "\n";
+      auto drawing = parse_dxf_drawing(dxf(broken + other), "t.dxf");
+      ASSERT_TRUE(drawing.has_value()) << drawing.error().message;
+      EXPECT_EQ(drawing->problems.size(), 1u) << broken;
+      if (drawing->problems.size() != 1u) continue;
+      const std::string& message = drawing->problems[0].message;
+      const std::string name = lines[1];
+      EXPECT_EQ(message.rfind("t.dxf, line 11, " + name, 0), 0u) << message;
+      const bool named = message.find(fmt::format("group {}: 'x' is not a number", code)) != std::string::npos ||
+                         message.find("the extrusion direction (210, 220, 230)") != std::string::npos;
+      EXPECT_TRUE(named) << "group " << code << ": " << message;
+      ASSERT_EQ(drawing->curves.size(), 1u) << message;  // the other line is kept
+      EXPECT_EQ(drawing->curves[0].entity, "LINE");
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 60);
 }
 
 TEST(DxfRead, HeaderUnitsAndSkippedEntities) {

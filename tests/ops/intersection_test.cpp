@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -212,6 +214,47 @@ TEST(SelfIntersections, ARationalLineThatTurnsBackOverlapsItself) {
   EXPECT_NEAR(folds[0].a.upper, 0.5, 1e-15);
   EXPECT_EQ(folds[0].b.lower, 1.0);
   EXPECT_NEAR(folds[0].b.upper, 0.5, 1e-15);
+}
+
+// Issue 42 (the dxf fuzzer): two pieces that each run out along a line and
+// back. Where two passes of different pieces cover one stretch, the general
+// searches saw every pair of their points as a tangency (an arc whose four
+// pieces ran out and back along one chord: 84 hits in 4.2 s). A on
+// (0,0) (2,0) (0,0) has x = 4t(1 - t), out to 1 at t = 1/2; B on (0,0) (4,0)
+// (0,0) has x = 8t(1 - t), out to 2, and reaches x = 1 at
+// t1 = (1 - sqrt(1/2)) / 2 and 1 - t1. Each pass of A covers [0, 1], and so
+// does each pass of B over [0, t1] and [1 - t1, 1]: four overlaps, two with
+// b running the way a runs, two against.
+TEST(Intersections, PiecesRunningOutAndBackAlongOneLineOverlapPassByPass) {
+  const BezierCurve a = bezier({{0, 0}, {2, 0}, {0, 0}}), b = bezier({{0, 0}, {4, 0}, {0, 0}});
+  const auto found = between(a, b);
+  ASSERT_EQ(found.size(), 4u);
+  const double t1 = (1.0 - std::sqrt(0.5)) / 2.0;
+  // Each as (a from, a to, b from, b to), sorted by (a from, b from).
+  const std::vector<std::array<double, 4>> expected = {
+      {0.0, 0.5, 0.0, t1}, {0.0, 0.5, 1.0, 1.0 - t1}, {0.5, 1.0, t1, 0.0}, {0.5, 1.0, 1.0 - t1, 1.0}};
+  std::vector<std::array<double, 4>> got;
+  for (const CurveIntersection& x : found) {
+    EXPECT_EQ(x.kind, IntersectionKind::overlap);
+    got.push_back({x.a.lower, x.a.upper, x.b.lower, x.b.upper});
+  }
+  std::sort(got.begin(), got.end());
+  for (std::size_t k = 0; k < expected.size(); ++k)
+    for (std::size_t c = 0; c < 4; ++c) EXPECT_NEAR(got[k][c], expected[k][c], 1e-12) << k << ", " << c;
+  // On one line, passes that only touch meet at one point (a tangency of
+  // order 0, as two arcs continuing one another do): end to end, and at the
+  // tip of a fold; passes that do not reach one another do not meet.
+  const auto end_to_end = between(bezier({{0, 0}, {1, 0}}), bezier({{1, 0}, {3, 0}}));
+  ASSERT_EQ(end_to_end.size(), 1u);
+  EXPECT_EQ(end_to_end[0].kind, IntersectionKind::tangent);
+  EXPECT_EQ(end_to_end[0].a.lower, 1.0);
+  EXPECT_EQ(end_to_end[0].b.lower, 0.0);
+  const auto at_the_tip = between(a, bezier({{1, 0}, {2, 0}}));
+  ASSERT_EQ(at_the_tip.size(), 1u);
+  EXPECT_EQ(at_the_tip[0].kind, IntersectionKind::tangent);
+  EXPECT_NEAR(at_the_tip[0].a.lower, 0.5, 1e-8);  // the fold's tip, x = 1, where x' = 0
+  EXPECT_EQ(at_the_tip[0].b.lower, 0.0);
+  EXPECT_TRUE(between(a, bezier({{1.5, 0}, {2, 0}})).empty());
 }
 
 // A closed curve that rests at its closing point (five repeated control points

@@ -499,13 +499,76 @@ TEST(Tessellate, RefusesAPatchThatJumpsAcrossAKnotLine) {
   const SurfaceView view[] = {broken};
   auto mesh = tessellate(view, Tolerance{0.1});
   ASSERT_FALSE(mesh.has_value());
-  EXPECT_EQ(mesh.error().message.rfind("patch 0 is not continuous across u = 0.5 (a knot of multiplicity degree + 1 "
-                                       "there): it jumps by ", 0),
-            0u)
+  EXPECT_EQ(mesh.error().message.rfind("patch 0 is not continuous across u = 0.5: it jumps by ", 0), 0u)
+      << mesh.error().message;
+  EXPECT_NE(mesh.error().message.find("(a knot of multiplicity degree + 1 there, or weights many orders of magnitude "
+                                      "apart, make such a jump); split it at that knot"),
+            std::string::npos)
       << mesh.error().message;
   // The sphere itself (knots of multiplicity 2 = degree: continuous) is not refused.
   const SurfaceView whole[] = {round};
   EXPECT_TRUE(tessellate(whole, Tolerance{0.1}).has_value());
+}
+
+namespace {
+
+/// The unit sphere of tessellate's tests with the weight of control point
+/// (row, column) replaced, as the model_json fuzzer mutated it.
+BSplineSurface sphere_with_weight(int row, int column, double weight) {
+  const BSplineSurface round = sphere({0, 0, 0}, 1.0);
+  std::vector<double> weights(round.weights().begin(), round.weights().end());
+  weights[static_cast<std::size_t>(row * 5 + column)] = weight;
+  return BSplineSurface::make(2, 2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, {0, 0, 0, 0.5, 0.5, 1, 1, 1},
+                              round.control_net(), weights)
+      .value();
+}
+
+}  // namespace
+
+// Issue 42 (the model_json fuzzer): the sphere with the weight beside its
+// north pole, (-1, 0, 1), at 7e13. Inside that control point's support the
+// surface is the point itself; it reaches the pole only within 10^-13 of
+// v = 1, finer than the quadtree's finest cells (2^-40 of a span). Those cells
+// could not be halved in v, so they were halved in u instead, ten million
+// triangles before the limit refused the sphere (49 s). A cell that must be
+// halved where it cannot be is refused at once, with where and by how much.
+TEST(Tessellate, RefusesASurfaceThatMovesWithinItsFinestCells) {
+  const BSplineSurface pulled = sphere_with_weight(4, 3, 7e13);
+  const SurfaceView view[] = {pulled};
+  auto mesh = tessellate(view, Tolerance{0.1});
+  ASSERT_FALSE(mesh.has_value());
+  EXPECT_NE(mesh.error().kind, ErrorKind::limit);
+  const std::string& message = mesh.error().message;
+  EXPECT_EQ(message.rfind("patch 0: the surface cannot be followed by triangles near (u, v) = (0.", 0), 0u) << message;
+  EXPECT_NE(message.find(" in v, continuous only in exact arithmetic (look for weights or control points many orders "
+                         "of magnitude apart)"),
+            std::string::npos)
+      << message;
+  // At 1e10 the same surface follows its weight within the finest cells.
+  const BSplineSurface steep = sphere_with_weight(4, 3, 1e10);
+  const SurfaceView followed[] = {steep};
+  auto meshed = tessellate(followed, Tolerance{0.1});
+  ASSERT_TRUE(meshed.has_value()) << meshed.error().message;
+  EXPECT_TRUE(mesh_topology(*meshed).watertight());
+}
+
+// Issue 42: where a huge or tiny weight pulls a side of a cell to one point,
+// the normal along that side is meaningless; compared anyway, it split cells
+// at the poles until they stood at the depth limit (and, before the limit was
+// refused, 1.5 times the triangles elsewhere). Normals are compared only
+// along edges longer than the flat scale (kMeshFlatCellFraction): every
+// such sphere is meshed, watertight, in fewer triangles than before (1,374,
+// 1,730 and 2,516, where the whole-cell test refused the first two and took
+// 3,436 for the third).
+TEST(Tessellate, NormalsAreComparedOnlyAlongEdgesThatAreNotFlat) {
+  for (const auto& [row, column, weight] : {std::tuple{4, 0, 1e-6}, std::tuple{7, 4, 1e6}, std::tuple{4, 0, 1e10}}) {
+    const BSplineSurface pulled = sphere_with_weight(row, column, weight);
+    const SurfaceView view[] = {pulled};
+    auto mesh = tessellate(view, Tolerance{0.1});
+    ASSERT_TRUE(mesh.has_value()) << row << ", " << column << ", " << weight << ": " << mesh.error().message;
+    EXPECT_TRUE(mesh_topology(*mesh).watertight()) << row << ", " << column << ", " << weight;
+    EXPECT_LT(mesh->triangles.size(), 3000u) << row << ", " << column << ", " << weight;
+  }
 }
 
 // Issue 15: a surface whose control points are all equal gave a 0-triangle

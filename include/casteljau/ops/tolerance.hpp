@@ -251,13 +251,15 @@ inline constexpr double kMeshSampledDeviationFraction = 0.75;
 /// vertices, so that shading and orientation agree, even at a loose tolerance.
 inline constexpr double kMeshMaxNormalTurn = 1.0471975511965976;
 
-/// A cell whose sampled points all fit in a box of diagonal at most this
-/// fraction of the tolerance is not split for its normals' turn: it is
-/// flat at the tolerance's scale whatever its normals do. Without it, a
-/// crease (a fold where the normal flips, as a collapsed control point makes)
-/// is refined to the quadtree's finest cells along its whole length, millions
-/// of cells before the triangle limit refuses it (a fuzzed sphere: 51 s).
-/// The distance test still applies to such a cell. Dimensionless.
+/// An edge of a quadtree cell whose sampled points all fit in a box of
+/// diagonal at most this fraction of the tolerance is flat at the tolerance's
+/// scale: the normals at its ends are not compared (a cell all of whose edges
+/// are flat is not split for its normals' turn). Along such an edge the normal
+/// may flip or be undefined (a crease from a collapsed control point, a pole,
+/// a side pulled to one point by a huge weight); counting it refines the cells
+/// to the quadtree's finest level along the whole edge, millions of cells
+/// before the triangle limit refuses them (fuzzed spheres: 51 s and 49 s).
+/// The distance test still applies to every cell. Dimensionless.
 inline constexpr double kMeshFlatCellFraction = 0.5;
 
 /// Deepest subdivision of one knot-span cell of a tessellation's quadtree, in
