@@ -260,6 +260,38 @@ TEST(BSplinePointsAt, KnotsCloserThanTheReciprocalRange) {
   expect_batch_equals_scalar(curve, us);
 }
 
+// The same for every fixed kernel (degrees 1..7, dimensions 1..3, rational
+// or not, with derivatives or not, lanes in one span and gathered from
+// several): a lane that comes out non-finite is recomputed by the scalar
+// code, and the batch gives point_at's and derivative_at's bits.
+TEST(BSplinePointsAt, EveryKernelRecomputesLanesInSpansBeyondTheReciprocalRange) {
+  Random random{4242u};
+  for (int p = 1; p <= 7; ++p) {
+    std::vector<double> knots(static_cast<std::size_t>(p + 1), 0.0);
+    knots.push_back(1e-310);
+    knots.push_back(2e-310);
+    knots.insert(knots.end(), static_cast<std::size_t>(p + 1), 1.0);
+    const int count = p + 3;
+    for (int d = 1; d <= 3; ++d) {
+      for (int rational = 0; rational <= 1; ++rational) {
+        std::vector<double> coordinates(static_cast<std::size_t>(count * d)), weights;
+        for (double& x : coordinates) x = -10.0 + 20.0 * random.unit();
+        if (rational == 1)
+          for (int i = 0; i < count; ++i) weights.push_back(0.5 + random.unit());
+        const BSplineCurve curve = BSplineCurve::from_trusted(p, knots, *PointArray::make(d, coordinates), weights);
+        std::vector<double> us{0.0, 5e-311, 1e-310, 1.5e-310, 2e-310, 0.5, 1.0, 3e-311, 1.2e-310, 1.7e-310};
+        for (int i = 0; i < 20; ++i) us.push_back(random.unit() * 3e-310);
+        for (double u : us) {
+          for (double c : point_at(curve, u)) ASSERT_TRUE(std::isfinite(c)) << p << ", " << d << ": " << u;
+        }
+        expect_batch_equals_scalar(curve, us);
+        std::sort(us.begin(), us.end());
+        expect_batch_equals_scalar(curve, us);
+      }
+    }
+  }
+}
+
 // --- the scalar arithmetic against independent formulas ----------------------
 
 /// sum |N_j| |R_j| and sum N_j R_j over the rows R_j (homogeneous if rational)

@@ -284,6 +284,16 @@ TEST(Lagrange, RefusesBadInput) {
   auto e = interpolate_lagrange(PointArray::make(2, {0, 0}).value(), std::vector<double>{0});
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "Lagrange interpolation needs at least 2 points, got 1");
+  // One point more than the highest degree allows: a limit, named with the degree.
+  const std::size_t too_many = static_cast<std::size_t>(tolerances::kMaxLagrangeDegree) + 2;
+  std::vector<double> many(too_many);
+  for (std::size_t i = 0; i < too_many; ++i) many[i] = static_cast<double>(i);
+  e = interpolate_lagrange(PointArray::make(1, many).value(), many);
+  ASSERT_FALSE(e);
+  EXPECT_EQ(e.error().kind, ErrorKind::limit);
+  EXPECT_EQ(e.error().message, "Lagrange interpolation of " + std::to_string(too_many) +
+                                   " points is above the limit of " + std::to_string(too_many - 1) + " (degree " +
+                                   std::to_string(tolerances::kMaxLagrangeDegree) + ")");
   e = interpolate_lagrange(three, std::vector<double>{0, 1});
   ASSERT_FALSE(e);
   EXPECT_EQ(e.error().message, "Lagrange interpolation needs one parameter per point: 3 points, 2 parameters");
