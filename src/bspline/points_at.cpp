@@ -75,16 +75,27 @@ inline Pack subtract_product_pack(Pack b, Pack a, Pack c) {
 #endif
 }
 
-/// Whether some lane of some pack is not finite (x * 0 is 0 unless x is
-/// infinite or NaN).
+/// 0 in each lane where every pack's lane is finite, NaN where one is not
+/// (x * 0 is 0 unless x is infinite or NaN).
 template <int Count>
-inline bool any_not_finite(const Pack* c) {
+inline Pack finiteness(const Pack* c) {
   Pack z = c[0] * 0.0;
   for (int j = 1; j < Count; ++j) z += c[j] * 0.0;
+  return z;
+}
+
+/// Whether some lane of a finiteness() sum is not 0.
+inline bool any_lane_not_finite(Pack z) {
   const Lanes bad = z != 0.0;
   bool result = false;
   for (int l = 0; l < kLanes; ++l) result |= bad[l] != 0;
   return result;
+}
+
+/// Whether some lane of some pack is not finite.
+template <int Count>
+inline bool any_not_finite(const Pack* c) {
+  return any_lane_not_finite(finiteness<Count>(c));
 }
 
 /// base[index[l]] in lane l.
@@ -416,7 +427,7 @@ class Kernel {
       }
       store_points<D, Streaming>(c, points);
       store_points<D, Streaming>(dc, derivatives);
-      return any_not_finite<D>(c) || any_not_finite<D>(dc);
+      return any_lane_not_finite(finiteness<D>(c) + finiteness<D>(dc));  // one reduction for both
     }
   }
 

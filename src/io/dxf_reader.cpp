@@ -8,6 +8,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -82,6 +83,23 @@ class Entity {
     for (const Group& g : groups_)
       if (g.code == code) return parse(g);
     return fallback;
+  }
+  /// A group that holds a whole number (flags, a unit code): refused unless
+  /// it is an integer within int's range (a cast of 3e65 to int is undefined
+  /// behaviour: the dxf fuzzer's LWPOLYLINE flags).
+  Expected<int> whole(int code, int fallback) const {
+    for (const Group& g : groups_)
+      if (g.code == code) return whole_of(g);
+    return fallback;
+  }
+  static Expected<int> whole_of(const Group& g) {
+    auto value = parse(g);
+    if (!value) return value.error();
+    if (*value != std::trunc(*value) || std::abs(*value) > static_cast<double>(std::numeric_limits<int>::max()))
+      return Error{fmt::format("line {}, group {}: {} is not a whole number within +-{}", g.line + 2, g.code, g.value,
+                               std::numeric_limits<int>::max()),
+                   ErrorKind::parse};
+    return static_cast<int>(*value);
   }
   static Expected<double> parse(const Group& g) {
     auto value = parse_number(g.value);
@@ -271,7 +289,8 @@ Expected<Model> read_ellipse(const Entity& e) {
 Expected<Model> read_lwpolyline(const Entity& e) {
   const auto ocs = e.ocs();
   if (!ocs) return Error{"the extrusion direction (210, 220, 230) is zero or not finite"};
-  auto elevation = e.number(38, 0.0), flags = e.number(70, 0.0);
+  auto elevation = e.number(38, 0.0);
+  auto flags = e.whole(70, 0);
   if (!elevation) return elevation.error();
   if (!flags) return flags.error();
   std::vector<Vec3d> vertices;
@@ -288,15 +307,15 @@ Expected<Model> read_lwpolyline(const Entity& e) {
       (g.code == 20 ? vertices.back()[1] : bulges.back()) = *v;
     }
   }
-  const bool closed = (static_cast<int>(*flags) & 1) != 0;
+  const bool closed = (*flags & 1) != 0;
   return polyline_curve(vertices, bulges, *ocs, closed);
 }
 
 /// POLYLINE with its VERTEX entities (SEQEND ends them).
 Expected<Model> read_polyline(const Entity& e, const std::vector<Entity>& vertices) {
-  auto flags = e.number(70, 0.0);
+  auto flags = e.whole(70, 0);
   if (!flags) return flags.error();
-  const int f = static_cast<int>(*flags);
+  const int f = *flags;
   if (f & (16 | 64)) return Error{"polygon and polyface meshes are surfaces, not curves"};
   const bool space = (f & 8) != 0, closed = (f & 1) != 0;
   const auto ocs = space ? std::optional<Ocs>(Ocs{}) : e.ocs();
@@ -306,9 +325,9 @@ Expected<Model> read_polyline(const Entity& e, const std::vector<Entity>& vertic
   std::vector<Vec3d> points;
   std::vector<double> bulges;
   for (const Entity& v : vertices) {
-    auto vertex_flags = v.number(70, 0.0);
+    auto vertex_flags = v.whole(70, 0);
     if (!vertex_flags) return vertex_flags.error();
-    if (static_cast<int>(*vertex_flags) & 16) continue;  // a spline frame control point, not on the curve
+    if (*vertex_flags & 16) continue;  // a spline frame control point, not on the curve
     auto p = v.point(10);
     auto bulge = v.number(42, 0.0);
     if (!p) return p.error();
@@ -348,10 +367,11 @@ Expected<Model> read_spline(const Entity& e) {
     else if (code == 23 && end_tangent) (*end_tangent)[1] = *v;
     else if (code == 33 && end_tangent) (*end_tangent)[2] = *v;
   }
-  const int p = static_cast<int>(*degree);
-  if (*degree != p || p < 1 || p > tolerances::kMaxBSplineDegree)
+  // The range first: the cast of a degree beyond int's is undefined.
+  if (!(*degree >= 1 && *degree <= tolerances::kMaxBSplineDegree) || *degree != std::trunc(*degree))
     return Error{fmt::format("the degree (71) must be a whole number in 1..{}, got {}", tolerances::kMaxBSplineDegree,
                              *degree)};
+  const int p = static_cast<int>(*degree);
   if (!control.empty()) {
     const std::size_t n = control.size() / 3;
     if (!weights.empty() && weights.size() != n)
@@ -501,9 +521,9 @@ Expected<DxfDrawing> parse_dxf_drawing(std::string_view text, const std::string&
     if (section == "HEADER") {
       for (std::size_t k = i; k + 1 < end; ++k)
         if (groups[k].code == 9 && groups[k].value == "$INSUNITS" && groups[k + 1].code == 70) {
-          auto units = Entity::parse(groups[k + 1]);
+          auto units = Entity::whole_of(groups[k + 1]);
           if (!units) return with_context(units.error(), source);
-          drawing.insunits = static_cast<int>(*units);
+          drawing.insunits = *units;
         }
     } else if (section == "ENTITIES") {
       for (std::size_t k = i; k < end;) {

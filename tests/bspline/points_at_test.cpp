@@ -243,6 +243,44 @@ TEST(BSplinePointsAt, LargeSortedAndRandomBatches) {
   }
 }
 
+// Streaming stores (outputs of 4 MiB and more, where the kernels bypass the
+// cache) for every fixed kernel, not only the cubic in space above: degrees
+// 1..7, dimensions 1..3, rational or not, points alone and with derivatives,
+// each on just over 4 MiB of points, sorted (whole blocks in one span) and
+// with every 13th parameter moved to another span (gathered blocks). Every
+// 61st result and the first and last blocks against the scalar functions'
+// bits.
+TEST(BSplinePointsAt, EveryKernelStreamsTheSameBits) {
+  Random random{5150u};
+  constexpr std::size_t kBytes = (std::size_t{4} << 20) + 4096;
+  for (int p = 1; p <= 7; ++p) {
+    for (int d = 1; d <= 3; ++d) {
+      for (int rational = 0; rational <= 1; ++rational) {
+        const BSplineCurve curve = random_curve(random, p, d, rational == 1, true);
+        const std::size_t dimension = static_cast<std::size_t>(d);
+        const std::size_t count = kBytes / (sizeof(double) * dimension);
+        const Interval domain = curve.domain();
+        std::vector<double> us(count);
+        for (std::size_t i = 0; i < count; ++i) us[i] = domain.lerp(static_cast<double>(i) / static_cast<double>(count - 1));
+        for (std::size_t i = 0; i < count; i += 13) us[i] = domain.lerp(random.unit());
+        std::vector<double> points(count * dimension), alone(count * dimension), first(count * dimension);
+        points_and_derivatives_at(curve, us, points, first);
+        points_at(curve, us, alone);
+        std::size_t mismatches = 0;
+        for (std::size_t i = 0; i < count; i += (i < 64 || i + 64 > count) ? 1 : 61) {
+          const Point expected = point_at(curve, us[i]), derivative = derivative_at(curve, us[i], 1);
+          for (std::size_t c = 0; c < dimension; ++c) {
+            const std::size_t k = i * dimension + c;
+            mismatches += !same_bits(points[k], expected[c]) || !same_bits(alone[k], expected[c]) ||
+                          !same_bits(first[k], derivative[c]);
+          }
+        }
+        EXPECT_EQ(mismatches, 0u) << "degree " << p << " dimension " << d << (rational ? " rational" : "");
+      }
+    }
+  }
+}
+
 TEST(BSplinePointsAt, KnotsCloserThanTheReciprocalRange) {
   // Knot differences below 2^-1024 have no finite reciprocal: the scalar code
   // divides there, and the batch must give the same finite values. make()

@@ -58,6 +58,44 @@ TEST(Expected, VoidChains) {
   ok.value();  // success: nothing happens
 }
 
+// Each operation on both sides, on a named Expected and on a temporary: a
+// value passes through the error handlers untouched, an error through the
+// value handlers, and the handler of the other side is never called.
+TEST(Expected, EveryOperationOnBothSides) {
+  int calls = 0;
+  const auto never = [&calls](const Error& e) {
+    ++calls;
+    return e;
+  };
+  // A value: or_else and transform_error return it, on a name and a temporary.
+  const Expected<int> five = parse_digit('5');
+  EXPECT_EQ(five.or_else([&](const Error&) { ++calls; return Expected<int>(0); }).value(), 5);
+  EXPECT_EQ(parse_digit('5').or_else([&](const Error&) { ++calls; return Expected<int>(0); }).value(), 5);
+  EXPECT_EQ(five.transform_error(never).value(), 5);
+  EXPECT_EQ(std::move(parse_digit('6')).value_or(0), 6);
+  // An error: and_then and transform keep it, on a temporary and for void results.
+  EXPECT_EQ(Expected<std::unique_ptr<int>>(Error{"no value"})
+                .and_then([&](std::unique_ptr<int> p) { ++calls; return Expected<int>(*p); })
+                .error()
+                .message,
+            "no value");
+  EXPECT_EQ(parse_digit('z').transform([&](int) { ++calls; }).error().message, "'z' is not a digit");
+  EXPECT_EQ(Expected<std::unique_ptr<int>>(Error{"gone"}).transform([&](std::unique_ptr<int>) { ++calls; }).error().message,
+            "gone");
+  EXPECT_EQ(std::move(parse_digit('z')).value_or(-1), -1);
+  // Status: success passes or_else and transform_error; failure passes transform.
+  const Status ok, failed = Error{"disk full"};
+  EXPECT_TRUE(ok.or_else([&](const Error&) { ++calls; return Status(Error{"x"}); }).has_value());
+  EXPECT_TRUE(ok.transform_error(never).has_value());
+  EXPECT_EQ(failed.transform([&] { ++calls; }).error().message, "disk full");
+  EXPECT_EQ(failed.transform([&] { ++calls; return 1; }).error().message, "disk full");
+  int ran = 0;
+  EXPECT_TRUE(ok.transform([&] { ++ran; }).has_value());
+  EXPECT_TRUE(ok.and_then([&] { ++ran; return Status(); }).has_value());
+  EXPECT_EQ(ran, 2);
+  EXPECT_EQ(calls, 0);
+}
+
 TEST(ExpectedDeathTest, ValueOnAnErrorSaysTheError) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_DEATH((void)parse_digit('q').value(), "casteljau: Expected::value\\(\\) on an error: 'q' is not a digit");

@@ -240,6 +240,32 @@ TEST(DxfRead, EveryNumberOfEveryEntityIsCheckedAndNamed) {
   EXPECT_GT(checked, 60);
 }
 
+// Issue 42 (the dxf fuzzer, UBSan): an LWPOLYLINE whose flags (70) were
+// 3.3e65 was cast to int, which is undefined. Flags, unit codes and the
+// spline degree are whole numbers within int's range, or the entity (the
+// file, for $INSUNITS) is refused, naming the group.
+TEST(DxfRead, WholeNumberGroupsRefuseFractionsAndHugeValues) {
+  auto drawing = parse_dxf_drawing(
+      dxf("0\nLWPOLYLINE\n70\n3.3e65\n10\n0\n20\n0\n10\n1\n20\n0\n"
+          "0\nPOLYLINE\n70\n1.5\n0\nVERTEX\n10\n0\n20\n0\n0\nSEQEND\n"
+          "0\nSPLINE\n71\n3e65\n40\n0\n40\n0\n40\n1\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n"
+          "0\nLWPOLYLINE\n70\n-1\n10\n0\n20\n0\n10\n1\n20\n0\n"),
+      "t.dxf");
+  ASSERT_TRUE(drawing.has_value()) << drawing.error().message;
+  ASSERT_EQ(drawing->problems.size(), 3u);
+  EXPECT_EQ(drawing->problems[0].message,
+            "t.dxf, line 11, LWPOLYLINE: line 14, group 70: 3.3e65 is not a whole number within +-2147483647");
+  EXPECT_EQ(drawing->problems[1].message,
+            "t.dxf, line 23, POLYLINE: line 26, group 70: 1.5 is not a whole number within +-2147483647");
+  EXPECT_EQ(drawing->problems[2].message.rfind("t.dxf, line 35, SPLINE: the degree (71) must be a whole number in 1..", 0),
+            0u)
+      << drawing->problems[2].message;
+  EXPECT_EQ(drawing->curves.size(), 1u);  // -1 has every bit set: a closed polyline
+  auto units = parse_dxf_drawing(dxf("", "9\n$INSUNITS\n70\n1e20\n"), "t.dxf");
+  ASSERT_FALSE(units.has_value());
+  EXPECT_EQ(units.error().message, "t.dxf: line 8, group 70: 1e20 is not a whole number within +-2147483647");
+}
+
 TEST(DxfRead, HeaderUnitsAndSkippedEntities) {
   const auto drawing = read_dxf(dxf("0\nTEXT\n1\nhello\n0\nLINE\n10\n0\n20\n0\n11\n1\n21\n0\n",
                                       "9\n$ACADVER\n1\nAC1015\n9\n$INSUNITS\n70\n4\n"));
