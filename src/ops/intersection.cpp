@@ -5,6 +5,7 @@
 #include "casteljau/ops/intersection.hpp"
 
 #include <algorithm>
+#include <span>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -738,12 +739,34 @@ bool trace_one_another(const BezierCurve& a, const BezierCurve& b, SharedPoint f
   return true;
 }
 
+/// Whether a's weights stay positive over its extension to [t0, t1]: the
+/// weights' own polynomial extended (the same arithmetic as the homogeneous
+/// rows' last coordinate), all its coefficients > 0. Beyond [0, 1] a rational
+/// piece's weight polynomial may reach zero, where the curve has a pole
+/// (extended_segment's contract leaves the check to its caller).
+bool extends_with_positive_weights(const BezierCurve& a, double t0, double t1) {
+  if (!a.is_rational()) return true;
+  const std::span<const double> w = a.weights();
+  const BezierCurve weights = BezierCurve::from_trusted(PointArray::from_trusted(1, {w.begin(), w.end()}));
+  const PointArray extended = extended_segment(weights, t0, t1).control_points();
+  return std::all_of(extended.coordinates().begin(), extended.coordinates().end(), [](double x) { return x > 0.0; });
+}
+
 /// Whether b continues a at a shared end point (two pieces of one curve
 /// meeting there): b's points kIntersectionZoneReach either side of it lie
 /// within the tolerance of a's polynomial extended beyond the piece (pieces
-/// that only join with high continuity part by far more there).
+/// that only join with high continuity part by far more there). A rational
+/// a is extended by half its domain, or less where its weights would reach
+/// zero (a DXF spline with a weight of 17 beside weights of 1 and 0.7 has
+/// poles just beyond its pieces' ends: the extension asserted; issue 42's dxf
+/// fuzzer); not at all when even 2^-10 would.
 bool continue_one_another(const BezierCurve& a, const BezierCurve& b, SharedPoint shared, double tolerance) {
-  const BezierCurve extended = extended_segment(a, shared.s - 0.5, shared.s + 0.5);
+  double reach = 0.5;
+  while (!extends_with_positive_weights(a, shared.s - reach, shared.s + reach)) {
+    reach *= 0.5;
+    if (reach < 0x1p-10) return false;
+  }
+  const BezierCurve extended = extended_segment(a, shared.s - reach, shared.s + reach);
   int checked = 0;
   for (const double side : {-kIntersectionZoneReach, kIntersectionZoneReach}) {
     const double t = shared.t + side;

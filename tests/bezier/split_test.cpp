@@ -87,6 +87,7 @@ TEST(Segment, IsTheExtendedSegmentInsideTheDomainAndRefusesTheRest) {
   EXPECT_EQ(segment(cubic, 0.0, 1.0).value(), extended_segment(cubic, 0.0, 1.0));
   EXPECT_EQ(segment(cubic, 0.75, 0.25).error().message, "the segment [0.75, 0.25] needs its start below its end");
   EXPECT_EQ(segment(cubic, -0.5, 0.5).error().message, "the segment [-0.5, 0.5] is not inside the domain [0, 1]");
+  EXPECT_EQ(segment(cubic, 0.5, 1.5).error().message, "the segment [0.5, 1.5] is not inside the domain [0, 1]");
   EXPECT_EQ(segment(cubic, 0.5, 0.5).error().message, "the segment [0.5, 0.5] needs its start below its end");
   EXPECT_EQ(segment(cubic, std::nan(""), 0.5).error().message, "the segment's start is NaN");
   EXPECT_EQ(split_at(cubic, 0.0).error().message, "the split parameter 0 is not strictly inside the domain [0, 1]");

@@ -83,6 +83,8 @@ TEST(Expected, EveryOperationOnBothSides) {
   EXPECT_EQ(Expected<std::unique_ptr<int>>(Error{"gone"}).transform([&](std::unique_ptr<int>) { ++calls; }).error().message,
             "gone");
   EXPECT_EQ(std::move(parse_digit('z')).value_or(-1), -1);
+  const Expected<int> bad = parse_digit('q');
+  EXPECT_EQ(bad.or_else([](const Error&) { return Expected<int>(7); }).value(), 7);
   // Status: success passes or_else and transform_error; failure passes transform.
   const Status ok, failed = Error{"disk full"};
   EXPECT_TRUE(ok.or_else([&](const Error&) { ++calls; return Status(Error{"x"}); }).has_value());

@@ -466,6 +466,27 @@ TEST(SpaceIntersections, OverlapsAndKnots) {
   EXPECT_NEAR(at_knot[0].a.lower, 1.0, 1e-15);
 }
 
+// Issue 42 (the dxf fuzzer; an assertion in the sanitizer build): whether a
+// rational piece continues another at their shared end was tested on the
+// piece extended by half its domain, but its weight polynomial
+// W(t) = (1 - t)^2 + 34 t (1 - t) + 0.7 t^2 = 1 + 32 t - 32.3 t^2 vanishes at
+// t = -0.0303 and 1.021, just beyond its ends: the extension's weights were
+// not all positive (W(-0.5) < 0). The extension now stops short of the
+// poles. The two curves meet at (0, 0, 0), a's start and b's end, crossing
+// there.
+TEST(SpaceIntersections, ARationalPieceIsNotExtendedThroughAPole) {
+  const BezierCurve a = bezier({{0, 0, 0}, {1, 1, 0}, {2, 0, 1}}, {1, 17, 0.7});
+  const BezierCurve b = bezier({{-2, 1, 0}, {-1, -1, 1}, {0, 0, 0}});
+  const auto met = between(a, b);
+  ASSERT_EQ(met.size(), 1u);
+  EXPECT_EQ(met[0].kind, IntersectionKind::transversal);
+  EXPECT_NEAR(met[0].a.lower, 0.0, 1e-12);
+  EXPECT_NEAR(met[0].b.lower, 1.0, 1e-12);
+  // As two pieces of one curve, joined there: the joint is no intersection.
+  const PiecewiseBezierCurve joined = PiecewiseBezierCurve::make({b, a}).value();
+  EXPECT_TRUE(self_intersections(joined, default_intersection_tolerance(joined, joined)).value().empty());
+}
+
 TEST(SpaceIntersections, SelfIntersectionsOfALoopLiftedIntoSpace) {
   // The plane loop (0,0) (2,2) (-1,2) (1,0) crosses itself at s = (5 - sqrt 15) / 10
   // and 1 - s. Lifted by z = t (1 - t), symmetric about 1/2, it still does;
