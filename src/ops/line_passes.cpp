@@ -10,12 +10,6 @@
 namespace casteljau::detail {
 namespace {
 
-double distance_between(std::span<const double> p, std::span<const double> q) {
-  double squared = 0.0;
-  for (std::size_t c = 0; c < p.size(); ++c) squared += (p[c] - q[c]) * (p[c] - q[c]);
-  return std::sqrt(squared);
-}
-
 /// The contact of pass p of `a` with pass q of `b`, if any: an overlap where
 /// their ranges of x share more than the tolerance, a point where they touch
 /// within it (only when `touches` counts).
@@ -73,7 +67,7 @@ std::optional<LinePasses> line_passes(const BezierCurve& piece, double tolerance
     passes.origin.assign(control[0].begin(), control[0].end());
     double farthest = 0.0;
     for (std::size_t k = 1; k < control.size(); ++k) {
-      if (const double d = distance_between(control[k], passes.origin); d > farthest) {
+      if (const double d = distance(control[k], passes.origin); d > farthest) {
         farthest = d;
         passes.direction.assign(control[k].begin(), control[k].end());
       }
