@@ -149,6 +149,19 @@ BSplineCurve mapped(const BSplineCurve& plane, Vec3d c, Vec3d u, Vec3d v) {
       .value();
 }
 
+/// The start of a counter-clockwise arc from angle `from` to angle `to` (in
+/// units of which `turn` makes a whole turn) within one turn, and its sweep in
+/// (0, turn]: equal angles sweep a whole turn. Each angle is reduced on its own
+/// first (std::fmod is exact): the difference of 4e21 and 210 degrees keeps
+/// nothing of the 210, and the fuzzer's ARC of 4e21 degrees became four pieces
+/// running out and back along one chord.
+std::pair<double, double> start_and_sweep(double from, double to, double turn) {
+  const double start = std::fmod(from, turn);
+  double sweep = std::fmod(std::fmod(to, turn) - start, turn);
+  if (sweep <= 0.0) sweep += turn;
+  return {start, sweep};
+}
+
 /// The arc of the circle (centre, radius) in the plane of `ocs` from angle a
 /// over `sweep` (radians, counter-clockwise about the extrusion).
 Expected<BSplineCurve> ocs_arc(const Ocs& ocs, Vec3d centre, double radius, double a, double sweep) {
@@ -246,13 +259,7 @@ Expected<Model> read_arc(const Entity& e, bool full_circle) {
     auto a = e.number(50, 0.0), b = e.number(51, 360.0);
     if (!a) return a.error();
     if (!b) return b.error();
-    // Each angle reduced on its own first (std::fmod is exact): the
-    // difference of 4e21 and 210 degrees keeps nothing of the 210, and the
-    // fuzzer's arc of 4e21 degrees became four pieces running out and back
-    // along one chord.
-    const double from = std::fmod(*a, 360.0), to = std::fmod(*b, 360.0);
-    double degrees = std::fmod(to - from, 360.0);
-    if (degrees <= 0.0) degrees += 360.0;  // ARC runs counter-clockwise from 50 to 51
+    const auto [from, degrees] = start_and_sweep(*a, *b, 360.0);  // ARC runs counter-clockwise from 50 to 51
     start = from * std::numbers::pi / 180.0;
     sweep = degrees * std::numbers::pi / 180.0;
   }
@@ -277,10 +284,7 @@ Expected<Model> read_ellipse(const Entity& e) {
   // Minor axis: ratio |major| along N x major (DXF's ELLIPSE, counter-clockwise about N).
   const Vec3d n = (1.0 / normal_length) * *normal;
   const Vec3d minor = *ratio * cross(n, *major);
-  // Each parameter reduced on its own first, as ARC's angles are.
-  const double from = std::fmod(*start, 2.0 * std::numbers::pi), to = std::fmod(*end, 2.0 * std::numbers::pi);
-  double sweep = std::fmod(to - from, 2.0 * std::numbers::pi);
-  if (sweep <= 0.0) sweep += 2.0 * std::numbers::pi;
+  const auto [from, sweep] = start_and_sweep(*start, *end, 2.0 * std::numbers::pi);
   auto unit = sweep >= 2.0 * std::numbers::pi ? make_circle(0.0, 0.0, 1.0) : make_arc(0.0, 0.0, 1.0, from, sweep);
   if (!unit) return unit.error();
   return as_model(mapped(*unit, *centre, *major, minor));

@@ -5,10 +5,10 @@
 #include "casteljau/ops/intersection.hpp"
 
 #include <algorithm>
-#include <span>
 #include <array>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <string>
 #include <tuple>
 

@@ -123,7 +123,7 @@ CellTest test_cell(const Patch& patch, const Cell& cell, double tolerance) {
   CellTest test;
   test.error = error;
   if (!too_far && !turns_u && !turns_v) return test;
-  test.split = true;
+  test.needs_split = true;
   test.in_u = turns_u;
   test.in_v = turns_v;
   if (too_far) {
@@ -147,7 +147,7 @@ Status refine(const Patch& patch, double tolerance, std::vector<Cell>& accepted,
     const Cell cell = pending.back();
     pending.pop_back();
     const CellTest test = test_cell(patch, cell, tolerance);
-    if (test.split) {
+    if (test.needs_split) {
       // A cell at the quadtree's depth limit in a direction it must be halved
       // in: the surface moves by more than the tolerance between parameters
       // 2^-40 of a knot span apart, continuous only in exact arithmetic (a

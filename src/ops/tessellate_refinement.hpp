@@ -32,7 +32,7 @@ Status check_cell_count(std::size_t cells, double tolerance);
 
 /// The verdict of the cell test on one cell.
 struct CellTest {
-  bool split = false;              ///< the cell fails: halve it
+  bool needs_split = false;        ///< the cell fails: halve it
   bool in_u = false, in_v = false;  ///< in which direction(s)
   double error = 0.0;              ///< the sampled distance to its fan of triangles
 };
