@@ -424,7 +424,8 @@ void bind_ops(py::module_& module) {
       "{'kind': 'transversal'|'tangent', 'a', 'b', 'point' (d,), 'multiplicity'} for points, {'kind': 'overlap', "
       "'a': (a0, a1), 'b': (b(a0), b(a1))} for shared stretches (ops/intersection.hpp). tolerance: the distance "
       "within which the curves meet (default 1e-9 of the larger size). ValueError for curves of two dimensions "
-      "or in R^1.");
+      "or in R^1, and where they run along one another about the tolerance apart, so that the search cannot "
+      "settle (the message names where).");
   module.def(
       "closest_among_curves",
       [](const py::sequence& curves, const py::object& points) {
@@ -476,7 +477,8 @@ void bind_ops(py::module_& module) {
       },
       py::arg("curve"), py::arg("tolerance") = py::none(),
       "The self-intersections of a curve (plane or in space; a < b, both on it), as intersections() reports "
-      "them; the joints of its pieces and the seam of a closed curve are not self-intersections, nor is a cusp.");
+      "them; the joints of its pieces and the seam of a closed curve are not self-intersections, nor is a cusp. "
+      "ValueError where it runs back along itself about the tolerance apart (the message names where).");
 
   module.def(
       "fit_arcs",

@@ -16,6 +16,7 @@
 #include "casteljau/ops/tolerance.hpp"
 #include "../bezier/de_casteljau.hpp"
 #include "certified_budget.hpp"
+#include "segment_distance.hpp"
 
 #if defined(__AVX__) || defined(__AVX512F__)
 #include <immintrin.h>
@@ -33,6 +34,7 @@
 namespace casteljau {
 namespace {
 
+using detail::distance_to_segment;
 using ops_detail::certified_budget;
 
 // --- search parameters (ratios of the budget, not tolerances) ---------------
@@ -63,22 +65,6 @@ constexpr double kNearlyFull = 0.88;
 constexpr int kMaxEvents = 8;
 // Proposals of at most this many pieces go to greedy furthest reach instead.
 constexpr double kGreedyBelow = 8.0;
-
-/// Distance from point p to the segment [a, b] (any dimension; a == b allowed).
-double distance_to_segment(std::span<const double> p, std::span<const double> a, std::span<const double> b) {
-  double ab2 = 0.0, apab = 0.0;
-  for (std::size_t j = 0; j < p.size(); ++j) {
-    ab2 += (b[j] - a[j]) * (b[j] - a[j]);
-    apab += (p[j] - a[j]) * (b[j] - a[j]);
-  }
-  const double u = ab2 > 0.0 ? std::clamp(apab / ab2, 0.0, 1.0) : 0.0;
-  double sum = 0.0;
-  for (std::size_t j = 0; j < p.size(); ++j) {
-    const double e = p[j] - (a[j] + u * (b[j] - a[j]));
-    sum += e * e;
-  }
-  return std::sqrt(sum);
-}
 
 double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
   return distance_to_segment(std::span<const double>(p.coordinates), std::span<const double>(a.coordinates),

@@ -20,8 +20,10 @@
 #include "casteljau/core/tolerance.hpp"
 #include "casteljau/ops/closest_point.hpp"
 #include "casteljau/ops/tolerance.hpp"
+#include "../core/number_text.hpp"
 #include "bernstein_columns.hpp"
 #include "line_passes.hpp"
+#include "segment_distance.hpp"
 
 namespace casteljau {
 namespace {
@@ -208,22 +210,32 @@ bool converged_pair(const BezierCurve& a, const BezierCurve& b, double s, double
 
 /// From (s, t) near an intersection, kept inside [0, 1]^2, newton_step
 /// halved until the points come nearer (at most 16 steps): where the
-/// curves cross, or in space pass each other closest.
+/// curves cross, or in space pass each other closest. It stops early where
+/// Newton creeps: after a step that had to be halved 10 times, or after three
+/// steps in a row that each took less than a quarter off the gap (Newton
+/// converges quadratically at a crossing and takes 2/3 or more off per step
+/// at contacts of order 2 to 4; near-parallel branches a few tolerances
+/// apart, issue 42's fuzzer, took all 16 steps of 10 halvings at each of
+/// 40,000 pairs of sub-curves).
 void refine(const BezierCurve& a, const BezierCurve& b, double& s, double& t) {
   double gap = distance(point_at(a, s), point_at(b, t));
+  int slow = 0;
   for (int iteration = 0; iteration < 16 && gap > 0.0; ++iteration) {
     double ds = 0.0, dt = 0.0;
     if (!newton_step(a, b, s, t, ds, dt)) break;
     // The step, halved until it brings the points nearer (near a tangency
     // the Jacobian is nearly singular and the full step overshoots).
     double factor = 1.0, s1 = s, t1 = t, gap1 = gap;
-    for (int halving = 0; halving < 30; ++halving, factor *= 0.5) {
+    int halvings = 0;
+    for (; halvings < 30; ++halvings, factor *= 0.5) {
       s1 = std::clamp(s + factor * ds, 0.0, 1.0), t1 = std::clamp(t + factor * dt, 0.0, 1.0);
       gap1 = distance(point_at(a, s1), point_at(b, t1));
       if (gap1 < gap) break;
     }
     if (!(gap1 < gap)) break;
+    slow = gap1 > 0.75 * gap ? slow + 1 : 0;
     s = s1, t = t1, gap = gap1;
+    if (halvings >= 10 || slow >= 3) break;
   }
 }
 
@@ -269,6 +281,32 @@ bool boxes_meet(const BezierCurve& a, const BezierCurve& b, double tolerance) {
     if (a_low > b_high + tolerance || b_low > a_high + tolerance) return false;
   }
   return true;
+}
+
+/// Whether two sub-curves lie farther apart than the tolerance, by their
+/// chords: each lies within its flatness (the largest distance of a control
+/// point from its chord segment) of the chord, so chords farther apart than
+/// the tolerance and both flatnesses part them (with kRoundingSlack of the
+/// largest coordinate for the rounding of the distances). The axis-aligned
+/// boxes of two sub-curves running side by side along a diagonal meet however
+/// far apart the curves are (issue 42's fuzzer: a curve of degree 10 running
+/// out along y = x and back, 20 to 3,000 tolerances off its way out, had every
+/// pair of its sub-curves there halved to the narrowest and Newton at each).
+bool chords_apart(const BezierCurve& a, const BezierCurve& b, double tolerance) {
+  const PointArray& p = a.control_points();
+  const PointArray& q = b.control_points();
+  double flat = 0.0, largest = 0.0;
+  for (const PointArray* points : {&p, &q}) {
+    const std::span<const double> first = (*points)[0], last = (*points)[points->size() - 1];
+    for (std::size_t i = 0; i < points->size(); ++i)
+      for (const double x : (*points)[i]) largest = std::max(largest, std::abs(x));
+    double deviation = 0.0;
+    for (std::size_t i = 1; i + 1 < points->size(); ++i)
+      deviation = std::max(deviation, detail::distance_to_segment((*points)[i], first, last));
+    flat += deviation;
+  }
+  const double gap = detail::distance_between_segments(p[0], p[p.size() - 1], q[0], q[q.size() - 1]);
+  return gap > tolerance + flat + tolerances::kRoundingSlack * largest;
 }
 
 /// A hit of two pieces on their spans of the curves' domains, into the
@@ -497,12 +535,23 @@ int space_contact_order(const BezierCurve& a, double s, const BezierCurve& b, do
   return distance(ka, kb) > kIntersectionContactCurvature * scale ? 2 : 3;
 }
 
+/// Where a subdivision search stopped short, its pair budget spent: the
+/// spans (on the two pieces) of a pair of sub-curves it had still to settle.
+struct Unsettled {
+  Interval s, t;
+};
+
 /// Where two pieces meet that their implicit equations cannot tell apart
 /// (parts of one piece, or two pieces of one algebraic curve crossing at its
-/// double point): pairs of sub-curves whose boxes meet, halved down to 1e-6
-/// of a piece (at most kMaxPairs pairs), then Newton on a(s) - b(t) = 0 from
-/// their middles. A solution is kept as a crossing when it converges to a few
-/// ulps of the scale with distinct tangents, as a tangency (one per cluster,
+/// double point): pairs of sub-curves whose boxes and chords come within the
+/// tolerance, halved down to 1e-6 of a piece, then Newton on a(s) - b(t) = 0
+/// from their middles. After kIntersectionPairBudget pairs the search goes on
+/// outside the contact zones found (a pair within kIntersectionContactZone of
+/// a zone's extent in both parameters adds only that zone's solutions) for as
+/// many again; where pairs still meet after that, or after the first budget
+/// with no zone to leave out, it stops and says where (Unsettled): its answer
+/// would depend on the order of the search. A solution is kept as a crossing
+/// when it converges to a few ulps of the scale with distinct tangents, as a tangency (one per cluster,
 /// multiplicity contact_order) when the points come within the tolerance
 /// with one tangent line. `skip(s, t)` drops the pairs already known (an
 /// overlap's diagonal, the parts' joint); for parts of one piece
@@ -510,26 +559,64 @@ int space_contact_order(const BezierCurve& a, double s, const BezierCurve& b, do
 /// reaches beyond the tolerance (near a cusp C(s) and C(t) come within
 /// rounding on loops of the size (t - s)^2).
 template <class Skip>
-void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& part_a, const BezierCurve& b,
-                     Interval span_b, const BezierCurve& part_b, bool same_curve, double tolerance, Skip&& skip,
-                     std::vector<Hit>& found) {
+[[nodiscard]] std::optional<Unsettled> subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& part_a,
+                                                       const BezierCurve& b, Interval span_b, const BezierCurve& part_b,
+                                                       bool same_curve, double tolerance, Skip&& skip,
+                                                       std::vector<Hit>& found) {
   struct Pair {
     Interval s, t;
     BezierCurve a, b;
   };
-  constexpr std::size_t kMaxPairs = 200000;
   std::vector<Pair> stack{{span_a, span_b, part_a, part_b}};
   const double scale = std::max(size_of(a), size_of(b));
   const double converged = kIntersectionConverged * std::max(scale, tolerances::kScaleFloor);
   const bool plane = a.dimension() == 2;
-  std::size_t visited = 0;
   const std::size_t first_new = found.size();
-  std::vector<std::vector<std::pair<double, double>>> zones;  // the solutions of each new hit
-  while (!stack.empty() && ++visited < kMaxPairs) {
+  struct Zone {
+    std::vector<std::pair<double, double>> solutions;
+    Interval s, t;  // their extent
+  };
+  std::vector<Zone> zones;  // of each new hit
+  const auto add_solution = [](Zone& zone, double s, double t) {
+    zone.solutions.push_back({s, t});
+    zone.s = {std::min(zone.s.lower, s), std::max(zone.s.upper, s)};
+    zone.t = {std::min(zone.t.lower, t), std::max(zone.t.upper, t)};
+  };
+  const auto in_a_zone = [&](const Pair& pair) {
+    for (std::size_t k = first_new; k < found.size(); ++k) {
+      if (found[k].kind != IntersectionKind::tangent) continue;
+      const Zone& zone = zones[k - first_new];
+      const double m = kIntersectionContactZone;
+      if (pair.s.lower >= zone.s.lower - m && pair.s.upper <= zone.s.upper + m && pair.t.lower >= zone.t.lower - m &&
+          pair.t.upper <= zone.t.upper + m)
+        return true;
+    }
+    return false;
+  };
+  const auto any_tangent = [&] {
+    return std::any_of(found.begin() + static_cast<std::ptrdiff_t>(first_new), found.end(),
+                       [](const Hit& f) { return f.kind == IntersectionKind::tangent; });
+  };
+  std::size_t visited = 0;
+  bool beyond_budget = false;  // visiting pairs outside the zones found
+  while (!stack.empty()) {
+    if (++visited > tolerances::kIntersectionPairBudget) {
+      if (beyond_budget || !any_tangent()) {
+        // The latest pair still to settle: the narrowest, where the search was.
+        for (auto pair = stack.rbegin(); pair != stack.rend(); ++pair)
+          if (boxes_meet(pair->a, pair->b, tolerance) && !chords_apart(pair->a, pair->b, tolerance) &&
+              !skip(pair->s, pair->t) && !(beyond_budget && in_a_zone(*pair)))
+            return Unsettled{pair->s, pair->t};
+        break;
+      }
+      beyond_budget = true;
+      visited = 0;
+    }
     Pair pair = std::move(stack.back());
     stack.pop_back();
-    if (!boxes_meet(pair.a, pair.b, tolerance)) continue;
+    if (!boxes_meet(pair.a, pair.b, tolerance) || chords_apart(pair.a, pair.b, tolerance)) continue;
     if (skip(pair.s, pair.t)) continue;
+    if (beyond_budget && in_a_zone(pair)) continue;
     // Halved until narrow, or until both sub-curves rest within the
     // tolerance of a point (a stall: repeated control points, a cusp), where
     // every finer pair would be one more solution of the same zone (a
@@ -588,18 +675,18 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
       return distance(point_at(a, 0.5 * (f.s + s)), point_at(b, 0.5 * (f.t + t))) <= tolerance;
     });
     if (seen != found.end()) {
-      if (!crossing) zones[static_cast<std::size_t>(seen - found.begin()) - first_new].push_back({s, t});
+      if (!crossing) add_solution(zones[static_cast<std::size_t>(seen - found.begin()) - first_new], s, t);
       continue;
     }
     found.push_back({s, t, crossing ? IntersectionKind::transversal : IntersectionKind::tangent, crossing ? 1 : 2});
-    zones.push_back({{s, t}});
+    zones.push_back({{{s, t}}, {s, s}, {t, t}});
   }
   // A zone's tangency: the median of its solutions where the curves come
   // nearest (within rounding of the least gap): the contact, where the gap
   // grows away from it; the middle of the zone, where rounding hides it.
   for (std::size_t k = first_new; k < found.size(); ++k) {
     if (found[k].kind != IntersectionKind::tangent) continue;
-    std::vector<std::pair<double, double>>& zone = zones[k - first_new];
+    const std::vector<std::pair<double, double>>& zone = zones[k - first_new].solutions;
     std::vector<double> gaps;
     for (const auto& [s, t] : zone) gaps.push_back(distance(point_at(a, s), point_at(b, t)));
     const double least = *std::min_element(gaps.begin(), gaps.end());
@@ -614,6 +701,7 @@ void subdivided_hits(const BezierCurve& a, Interval span_a, const BezierCurve& p
     if (found[k].kind == IntersectionKind::tangent)
       found[k].multiplicity = plane ? contact_order(a, found[k].s, b, found[k].t)
                                     : space_contact_order(a, found[k].s, b, found[k].t);
+  return std::nullopt;
 }
 
 /// Tangencies of one contact zone found from several pairs of parts: one,
@@ -811,7 +899,8 @@ std::optional<std::vector<Hit>> hits_on_one_line(const BezierCurve& a, const Bez
 /// continues the other, and the points where they come within the tolerance
 /// (subdivision of their boxes and Gauss-Newton on the nearest pair),
 /// classified by their tangents.
-std::vector<Hit> space_piece_hits(const BezierCurve& a, const BezierCurve& b, double tolerance) {
+std::vector<Hit> space_piece_hits(const BezierCurve& a, const BezierCurve& b, double tolerance,
+                                  std::optional<Unsettled>& unsettled) {
   if (auto on_line = hits_on_one_line(a, b, tolerance)) return *on_line;
   std::vector<Hit> hits;
   std::vector<SharedPoint> pairs = ends_on_each_other(a, b, tolerance);
@@ -826,7 +915,7 @@ std::vector<Hit> space_piece_hits(const BezierCurve& a, const BezierCurve& b, do
     return std::any_of(continued.begin(), continued.end(),
                        [&](const SharedPoint& p) { return on_shared_stretch({p}, si, ti); });
   };
-  subdivided_hits(a, {0.0, 1.0}, a, b, {0.0, 1.0}, b, false, tolerance, shared, hits);
+  unsettled = subdivided_hits(a, {0.0, 1.0}, a, b, {0.0, 1.0}, b, false, tolerance, shared, hits);
   // Around a cusp the nearest pairs spread along a zone the midpoint test of
   // subdivided_hits does not join (the parameter is quadratic there).
   merge_tangent_zones(a, b, tolerance, hits);
@@ -835,8 +924,10 @@ std::vector<Hit> space_piece_hits(const BezierCurve& a, const BezierCurve& b, do
   return hits;
 }
 
-/// The intersections of piece a with piece b (local parameters).
-std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double tolerance) {
+/// The intersections of piece a with piece b (local parameters), or where
+/// their subdivision search stopped short (`unsettled`, set).
+std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double tolerance,
+                            std::optional<Unsettled>& unsettled) {
   std::vector<Hit> hits;
   if (a.degree() == 0 || b.degree() == 0) {
     // A point piece meets the other where it lies on it.
@@ -850,7 +941,7 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
                       IntersectionKind::transversal, 1});
     return hits;
   }
-  if (a.dimension() != 2) return space_piece_hits(a, b, tolerance);
+  if (a.dimension() != 2) return space_piece_hits(a, b, tolerance, unsettled);
   // Implicitize the piece of lower degree (the Bézout matrix is n x n).
   const bool swap = a.degree() > b.degree();
   const BezierCurve& implicit = swap ? b : a;
@@ -875,7 +966,9 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
     const auto shared = [&](Interval si, Interval ti) {
       return on_shared_stretch(pairs, si, ti) || along_shared_stretch(implicit, other, pairs, si, ti);
     };
-    subdivided_hits(implicit, {0.0, 1.0}, implicit, other, {0.0, 1.0}, other, false, tolerance, shared, crossings);
+    const std::optional<Unsettled> stopped =
+        subdivided_hits(implicit, {0.0, 1.0}, implicit, other, {0.0, 1.0}, other, false, tolerance, shared, crossings);
+    if (stopped) unsettled = swap ? Unsettled{stopped->t, stopped->s} : *stopped;
     for (const Hit& crossing : crossings) emit(crossing.s, crossing.t, crossing.kind, crossing.multiplicity);
     if (!pairs.empty()) hits.push_back(oriented(shared_hit(pairs), swap));
     return hits;
@@ -964,6 +1057,23 @@ std::vector<Hit> piece_hits(const BezierCurve& a, const BezierCurve& b, double t
   return hits;
 }
 
+/// The refusal of a search that stopped short: where, in the curves'
+/// parameters (the middle of the unsettled pair's spans on the pieces
+/// spanning span_a and span_b), `which` naming the curves.
+Error unsettled_search(const Unsettled& where, Interval span_a, Interval span_b, const std::string& which) {
+  const auto curve_parameter = [](Interval piece, Interval local) {
+    return piece.lower + 0.5 * (local.lower + local.upper) * (piece.upper - piece.lower);
+  };
+  return Error{"the intersection search gave up near parameters " +
+                   detail::number_text(curve_parameter(span_a, where.s)) + " and " +
+                   detail::number_text(curve_parameter(span_b, where.t)) + " " + which +
+                   ", where they come within the tolerance of one another in more pairs of sub-curves than it visits (" +
+                   std::to_string(tolerances::kIntersectionPairBudget) +
+                   ", as many again outside contact zones): they run along one another about the tolerance apart, "
+                   "neither crossing nor one overlap; try a smaller or a larger tolerance",
+               ErrorKind::limit};
+}
+
 }  // namespace
 
 const char* kind_name(IntersectionKind kind) {
@@ -997,8 +1107,10 @@ Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b,
     for (std::size_t k = 0; k < pb.pieces.size(); ++k) {
       if (!boxes_meet(pa.pieces[i], pb.pieces[k], tolerance.distance)) continue;
       const Interval span_b{pb.breakpoints[k], pb.breakpoints[k + 1]};
-      for (const Hit& hit : piece_hits(pa.pieces[i], pb.pieces[k], tolerance.distance))
-        record(hit, pa.pieces[i], span_a, span_b, points, overlaps);
+      std::optional<Unsettled> unsettled;
+      const std::vector<Hit> hits = piece_hits(pa.pieces[i], pb.pieces[k], tolerance.distance, unsettled);
+      if (unsettled) return unsettled_search(*unsettled, span_a, span_b, "of the first curve and the second");
+      for (const Hit& hit : hits) record(hit, pa.pieces[i], span_a, span_b, points, overlaps);
     }
   }
   // On a closed curve the two ends of the domain are one point: a hit there
@@ -1082,8 +1194,9 @@ Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tol
       const auto nothing = [](Interval, Interval) { return false; };
       for (std::size_t p = 0; p < parts.size(); ++p)
         for (std::size_t q = p + 1; q < parts.size(); ++q)
-          subdivided_hits(piece, parts[p].span, parts[p].curve, piece, parts[q].span, parts[q].curve, true,
-                          tolerance.distance, nothing, inside);
+          if (const auto unsettled = subdivided_hits(piece, parts[p].span, parts[p].curve, piece, parts[q].span,
+                                                     parts[q].curve, true, tolerance.distance, nothing, inside))
+            return unsettled_search(*unsettled, spans[i], spans[i], "of the curve");
       merge_tangent_zones(piece, piece, tolerance.distance, inside);
     }
     for (const Hit& hit : inside) {
@@ -1094,7 +1207,10 @@ Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tol
     // Piece i against the later pieces.
     for (std::size_t k = i + 1; k < count; ++k) {
       if (!boxes_meet(piece, pieces[k], tolerance.distance)) continue;
-      for (const Hit& hit : piece_hits(piece, pieces[k], tolerance.distance)) {
+      std::optional<Unsettled> unsettled;
+      const std::vector<Hit> hits = piece_hits(piece, pieces[k], tolerance.distance, unsettled);
+      if (unsettled) return unsettled_search(*unsettled, spans[i], spans[k], "of the curve");
+      for (const Hit& hit : hits) {
         if (hit.kind != IntersectionKind::overlap) {
           const bool joint = k == i + 1 && is_joint(piece, hit.s, pieces[k], hit.t, tolerance.distance);
           const bool seam =

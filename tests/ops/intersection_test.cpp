@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "casteljau/bezier/evaluate.hpp"
@@ -500,6 +502,62 @@ TEST(SpaceIntersections, SelfIntersectionsOfALoopLiftedIntoSpace) {
   EXPECT_NEAR(crossing[0].b.lower, 1 - s, 1e-14);
   const BezierCurve rising = bezier({{0, 0, 0}, {2, 2, 1.0 / 3}, {-1, 2, 2.0 / 3}, {1, 0, 1}});
   EXPECT_TRUE(self_intersections(rising, default_intersection_tolerance(rising, rising)).value().empty());
+}
+
+// Issue 42 (the curve_numbers fuzzer): a hairpin out along y = x and back,
+// its way back `offset` tolerances off its way out at the ends (0 at the
+// tip). Half a tolerance off, the passes are one overlap. A tolerance and a
+// half off they come within the tolerance of one another in more pairs of
+// sub-curves than the search visits (kIntersectionPairBudget): its answer
+// would depend on the order of the search, so it is refused (a limit), naming
+// where, in the curve's parameters. Before, the search stopped silently.
+BezierCurve hairpin(double offset, int dimension) {
+  const double o = offset * 1e-9 / std::sqrt(2.0);
+  const std::vector<std::vector<double>> plane = {{0, 0}, {0.5, 0.5}, {1, 1}, {0.5 + o, 0.5 - o}, {o, -o}};
+  std::vector<std::vector<double>> rows;
+  for (const auto& p : plane) rows.push_back(dimension == 2 ? p : std::vector<double>{p[0], p[1], 0.25 * p[0]});
+  return bezier(rows);
+}
+
+/// The two parameters an unsettled search's refusal names, after `lead`.
+std::array<double, 2> named_parameters(const Error& error, const std::string& lead, const std::string& which) {
+  EXPECT_EQ(error.kind, ErrorKind::limit) << error.message;
+  EXPECT_EQ(error.message.rfind(lead, 0), 0u) << error.message;
+  EXPECT_NE(error.message.find(which), std::string::npos) << error.message;
+  std::array<double, 2> at{NAN, NAN};
+  EXPECT_EQ(std::sscanf(error.message.c_str() + lead.size(), "%lf and %lf", &at[0], &at[1]), 2) << error.message;
+  return at;
+}
+
+TEST(SelfIntersections, AHairpinAboutTheToleranceWideIsRefusedNamingWhere) {
+  const std::string lead = "the intersection search gave up near parameters ";
+  const BezierCurve near_hairpin = hairpin(0.5, 2), wider_hairpin = hairpin(1.5, 2);
+  const auto close = self_intersections(near_hairpin, Tolerance{1e-9}).value();
+  ASSERT_EQ(close.size(), 1u);
+  EXPECT_EQ(close[0].kind, IntersectionKind::overlap);
+  EXPECT_EQ(close[0].a, (Interval{0.0, 0.5}));
+  EXPECT_EQ(close[0].b, (Interval{1.0, 0.5}));
+  const auto refused = self_intersections(wider_hairpin, Tolerance{1e-9});
+  ASSERT_FALSE(refused);
+  const std::array<double, 2> at = named_parameters(refused.error(), lead, "of the curve");
+  // On the two passes, where they run about the tolerance apart.
+  EXPECT_GT(at[0], 0.0);
+  EXPECT_LT(at[0], 0.5);
+  EXPECT_GT(at[1], 0.5);
+  EXPECT_LT(at[1], 1.0);
+  // The two passes as two curves, in the plane (pieces of one algebraic
+  // curve) and in space: the same.
+  for (const int dimension : {2, 3}) {
+    const auto passes = split_at(hairpin(1.5, dimension), 0.5).value();
+    const auto between_passes = intersections(passes.first, passes.second, Tolerance{1e-9});
+    ASSERT_FALSE(between_passes) << dimension;
+    const std::array<double, 2> where = named_parameters(between_passes.error(), lead, "of the first curve and the second");
+    EXPECT_TRUE(where[0] > 0.0 && where[0] < 1.0 && where[1] > 0.0 && where[1] < 1.0) << where[0] << " " << where[1];
+    const auto near = split_at(hairpin(0.5, dimension), 0.5).value();
+    const auto overlap = intersections(near.first, near.second, Tolerance{1e-9}).value();
+    ASSERT_EQ(overlap.size(), 1u) << dimension;
+    EXPECT_EQ(overlap[0].kind, IntersectionKind::overlap) << dimension;
+  }
 }
 
 TEST(Intersections, RefuseBadInput) {

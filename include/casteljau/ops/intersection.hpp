@@ -89,7 +89,12 @@ Tolerance default_intersection_tolerance(CurveView a, CurveView b);
 /// Errors: a curve in R^1 ("intersections need curves in R^2 or more, the
 /// first lives in R^1"), curves of two dimensions ("intersections need curves
 /// in one space, the first lives in R^2, the second in R^3"), a tolerance not
-/// finite or <= 0.
+/// finite or <= 0; and (ErrorKind::limit) curves that run along one another
+/// about the tolerance apart, neither crossing nor one overlap, where more
+/// pairs of sub-curves come within the tolerance than the search visits
+/// (tolerances::kIntersectionPairBudget): "the intersection search gave up
+/// near parameters 0.33 and 0.67 of the first curve and the second, ...";
+/// its answer would depend on the order of the search (issue 42).
 Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b, Tolerance tolerance);
 
 /// The self-intersections of a curve (plane, or in space as above, where the
@@ -107,7 +112,8 @@ Expected<std::vector<CurveIntersection>> intersections(CurveView a, CurveView b,
 /// two parts of one piece are intersected by subdivision of their boxes and
 /// Newton on C(s) - C(t) = 0, kept when it converges to rounding with
 /// s != t (a cusp, where C' vanishes, is not a self-intersection).
-/// Errors: a curve in R^1, a tolerance not finite or <= 0.
+/// Errors: a curve in R^1, a tolerance not finite or <= 0, and (a limit) a
+/// curve that runs back along itself about the tolerance apart, as above.
 Expected<std::vector<CurveIntersection>> self_intersections(CurveView curve, Tolerance tolerance);
 
 /// The name of a kind as the CLI's JSON writes it: "transversal", "tangent", "overlap".
