@@ -3,11 +3,13 @@
 // 1979; Hutchinson & de Hoog 1985 for the trace), and refinement to a
 // tolerance. See interpolation/fit.hpp.
 //
-// All three share one linear problem (FitSystem): the design rows N_j(t_k),
-// the banded Gram matrix G = BᵀB over the free control points, the right side
-// Bᵀ P̃ and the penalty Ω = (∫ N_j'' N_k''). For a given λ the normal
-// equations (G + λ Ω) Q = Bᵀ P̃ − λ K are factored once and solved for the d
-// coordinates together.
+// All three share one linear problem (FitSystem): the design rows N_j(t_k)
+// rotated into a banded R once (banded_qr.hpp), the penalty Ω = (∫ N_j'' N_k'')
+// as rows r_q at Gauss nodes; for a given λ the rows √λ r_q are merged with
+// R's, and R Q = Qᵀ P̃ solved for the d coordinates together. The Gram matrix
+// G = BᵀWB and Ω are kept for the trace of the hat matrix (GCV) and the scale
+// λ₀ = tr G / tr Ω only: the normal equations (G + λ Ω) Q = Bᵀ P̃ − λ K, which
+// square the design's condition number, are never solved (issue 43).
 
 #include "casteljau/interpolation/fit.hpp"
 
@@ -29,6 +31,7 @@
 #include "casteljau/interpolation/tolerance.hpp"
 #include "../core/number_text.hpp"
 #include "collocation.hpp"
+#include "banded_qr.hpp"
 #include "fit_banded.hpp"
 #include "input_checks.hpp"
 
@@ -36,6 +39,7 @@ namespace casteljau {
 
 namespace {
 
+using detail::BandedQr;
 using detail::number_text;
 using detail::SymmetricBand;
 
@@ -162,13 +166,21 @@ void gauss_legendre(int count, std::vector<double>& nodes, std::vector<double>& 
   if (count % 2 == 1) nodes[static_cast<std::size_t>(count / 2)] = 0.0;  // exact middle node
 }
 
-/// Ω_jk = ∫_{t_0}^{t_m} N_j''(u) N_k''(u) du over all n+1 basis functions:
-/// per non-empty knot span, the p−1 point Gauss–Legendre rule, exact since
-/// N_j'' N_k'' is a polynomial of degree 2p − 4 there. O(n p³).
-SymmetricBand penalty_matrix(std::span<const double> knots, int degree) {
+/// The penalty Ω_jk = ∫_{t_0}^{t_m} N_j''(u) N_k''(u) du over all n+1 basis
+/// functions as a sum of rows, Ω = Σ_q r_q r_qᵀ with r_q = √w_q N''(u_q) at
+/// the nodes u_q of the p−1 point Gauss–Legendre rule on each non-empty knot
+/// span (exact there: N_j'' N_k'' is a polynomial of degree 2p − 4). The rows
+/// go into the least-squares problem beside the data's, scaled by √λ, so that
+/// the penalized fit is solved by rotations too. Row q's p+1 values are for
+/// the columns first[q] .. first[q] + p. O(n p²).
+struct PenaltyRows {
+  std::vector<std::size_t> first;
+  std::vector<double> values;
+};
+PenaltyRows penalty_rows(std::span<const double> knots, int degree) {
   const auto p = static_cast<std::size_t>(degree);
   const std::size_t count = knots.size() - p - 1;
-  SymmetricBand omega(count, degree);
+  PenaltyRows rows;
   std::vector<double> nodes, weights;
   gauss_legendre(std::max(degree - 1, 1), nodes, weights);
   std::vector<double> derivatives(3 * (p + 1));
@@ -178,14 +190,12 @@ SymmetricBand penalty_matrix(std::span<const double> knots, int degree) {
     const double half = 0.5 * (b - a), middle = 0.5 * (a + b);
     for (std::size_t g = 0; g < nodes.size(); ++g) {
       basis_function_derivatives(knots, degree, static_cast<int>(span), middle + half * nodes[g], 2, derivatives);
-      const double* second = derivatives.data() + 2 * (p + 1);
-      const double w = half * weights[g];
-      for (std::size_t r = 0; r <= p; ++r) {
-        for (std::size_t s = 0; s <= r; ++s) omega.at(span - p + r, span - p + s) += w * second[r] * second[s];
-      }
+      const double root = std::sqrt(half * weights[g]);
+      rows.first.push_back(span - p);
+      for (std::size_t r = 0; r <= p; ++r) rows.values.push_back(root * derivatives[2 * (p + 1) + r]);
     }
   }
-  return omega;
+  return rows;
 }
 
 // --- the linear problem ------------------------------------------------------------
@@ -206,7 +216,9 @@ struct Score {
 /// The storage of one solve, kept across the λ of a GCV search: for 10⁶
 /// points each solve would otherwise allocate (and page in) some 50 MB.
 struct SolveBuffers {
-  SymmetricBand matrix{0, 1};
+  BandedQr qr{0, 1, 1};
+  SymmetricBand matrix{0, 1};  // RᵀR = L D Lᵀ, for the trace
+  std::vector<double> norms;   // the diagonal of G + λΩ
   std::vector<double> rhs;
 };
 
@@ -214,64 +226,53 @@ struct SolveBuffers {
 /// Interpolated ends fix Q_0 = P_0 and Q_n = P_m, leave the free columns
 /// 1..n−1 and the rows 1..m−1 with P̃_k = P_k − N_0(t_k) P_0 − N_n(t_k) P_m
 /// (The NURBS Book eq. 9.63–9.67); free ends leave every column and row.
+/// The data rows are rotated into R once (BandedQr); each λ adds the penalty
+/// rows √λ r_q to a copy, their fixed columns' share moved to the right side
+/// as the data's is.
 class FitSystem {
  public:
   /// `weights`: empty (all 1) or one w_k >= 0 per point, multiplying row k's
-  /// squared residual (its contribution to G and Bᵀ P̃).
+  /// squared residual (its row scaled by √w_k).
   FitSystem(const PointArray& points, std::span<const double> parameters, int degree, std::vector<double> knots,
             FitEnds ends, bool with_penalty, std::span<const double> weights = {})
       : points_(points), weights_(weights.begin(), weights.end()), degree_(degree), knots_(std::move(knots)),
         count_(knots_.size() - static_cast<std::size_t>(degree) - 1), clamp_(ends == FitEnds::interpolated),
         first_row_(clamp_ ? 1 : 0), end_row_(clamp_ ? points.size() - 1 : points.size()),
         first_column_(clamp_ ? 1 : 0), free_count_(clamp_ ? count_ - 2 : count_),
-        gram_(free_count_, degree), right_side_(free_count_ * static_cast<std::size_t>(points.dimension()), 0.0),
-        penalty_(0, degree) {
+        gram_(free_count_, degree), data_(free_count_, degree, static_cast<std::size_t>(points.dimension())) {
     const auto p = static_cast<std::size_t>(degree);
     const auto d = static_cast<std::size_t>(points.dimension());
     const std::size_t rows = end_row_ - first_row_;
     spans_.resize(rows);
     basis_.resize(rows * (p + 1));
     targets_.resize(rows * d);
+    std::vector<double> values(p + 1);
     for (std::size_t k = first_row_; k < end_row_; ++k) {
       const std::size_t row = k - first_row_;
       const int span = find_span(knots_, degree, parameters[k]);
       spans_[row] = static_cast<std::size_t>(span);
-      const std::span<double> values(basis_.data() + row * (p + 1), p + 1);
-      basis_functions(knots_, degree, span, parameters[k], values);
+      basis_functions(knots_, degree, span, parameters[k], std::span<double>(basis_.data() + row * (p + 1), p + 1));
       double* target = targets_.data() + row * d;
       for (std::size_t c = 0; c < d; ++c) target[c] = points[k][c];
-      if (clamp_) {  // P̃_k: the fixed end control points' share moved to the data side
-        const std::size_t column0 = spans_[row] - p;
-        for (std::size_t r = 0; r <= p; ++r) {
-          const std::size_t column = column0 + r;
-          if (column == 0 || column == count_ - 1) {
-            const auto fixed = column == 0 ? points[0] : points[points.size() - 1];
-            for (std::size_t c = 0; c < d; ++c) target[c] -= values[r] * fixed[c];
-          }
-        }
-      }
-      accumulate_row(row);
+      const std::size_t first = free_row(spans_[row] - p, basis_.data() + row * (p + 1), target, values);
+      const double weight = weight_of(row);
+      if (weight == 0.0) continue;
+      data_.add_row(first, values, std::span<const double>(target, d), std::sqrt(weight));
+      for (std::size_t r = 0; r <= p && first + r < free_count_; ++r)
+        for (std::size_t s = 0; s <= r; ++s) gram_.at(first + r, first + s) += weight * values[r] * values[s];
     }
     if (with_penalty) {
-      penalty_ = penalty_matrix(knots_, degree);
+      const PenaltyRows all = penalty_rows(knots_, degree);
       free_penalty_ = SymmetricBand(free_count_, degree);
-      coupling_.assign(free_count_ * d, 0.0);
-      for (std::size_t i = 0; i < free_count_; ++i) {
-        const std::size_t column = i + first_column_;
-        for (std::size_t j = free_penalty_.first_column(i); j <= i; ++j) {
-          free_penalty_.at(i, j) = penalty_.at(column, j + first_column_);
-        }
-      }
-      if (clamp_) {  // K = Ω_{free,0} P_0 + Ω_{free,n} P_m
-        for (std::size_t i = 0; i < free_count_; ++i) {
-          const std::size_t column = i + 1;
-          for (std::size_t c = 0; c < d; ++c) {
-            double sum = 0.0;
-            if (column <= p) sum += penalty_.at(column, 0) * points[0][c];
-            if (count_ - 1 - column <= p) sum += penalty_.at(count_ - 1, column) * points[points.size() - 1][c];
-            coupling_[i * d + c] = sum;
-          }
-        }
+      std::vector<double> target(d);
+      for (std::size_t q = 0; q < all.first.size(); ++q) {
+        std::fill(target.begin(), target.end(), 0.0);  // 0 − the fixed columns' share
+        const std::size_t first = free_row(all.first[q], all.values.data() + q * (p + 1), target.data(), values);
+        penalty_first_.push_back(first);
+        penalty_values_.insert(penalty_values_.end(), values.begin(), values.end());
+        penalty_targets_.insert(penalty_targets_.end(), target.begin(), target.end());
+        for (std::size_t r = 0; r <= p && first + r < free_count_; ++r)
+          for (std::size_t s = 0; s <= r; ++s) free_penalty_.at(first + r, first + s) += values[r] * values[s];
       }
     }
   }
@@ -285,13 +286,13 @@ class FitSystem {
     const double g = data_trace(), omega = penalty_trace();
     return g > 0.0 && omega > 0.0 ? g / omega : 1.0;
   }
-  /// tr G = tr(BᵀB) and tr Ω over the free columns.
+  /// tr G = tr(BᵀWB) and tr Ω over the free columns.
   double data_trace() const noexcept { return gram_.trace(); }
   double penalty_trace() const noexcept { return free_penalty_.trace(); }
 
-  /// The fit at λ (0: plain least squares); nothing when the normal
-  /// equations are singular. `with_trace`: also tr H by the band of the
-  /// inverse (for λ = 0 it is the number of control points exactly).
+  /// The fit at λ (0: plain least squares); nothing when the system is
+  /// singular. `with_trace`: also tr H by the band of the inverse (for λ = 0
+  /// it is the number of control points exactly).
   std::optional<Solution> solve(double lambda, bool with_trace) const {
     SolveBuffers buffers;
     const auto score = solve_into(lambda, with_trace, buffers);
@@ -308,30 +309,49 @@ class FitSystem {
   }
 
   /// The residual and tr H at λ > 0 for GCV, in `buffers` (reused from one
-  /// λ to the next); nothing when the normal equations are singular.
+  /// λ to the next); nothing when the system is singular.
   std::optional<Score> score(double lambda, SolveBuffers& buffers) const { return solve_into(lambda, true, buffers); }
 
  private:
-  /// Factors G + λΩ and solves for the free control points into buffers.rhs.
+  /// Rotates the penalty rows (λ > 0) into a copy of the data's R and solves
+  /// for the free control points into buffers.rhs; nothing where a pivot of
+  /// RᵀR = G + λΩ is not above kFitSingularPivot times its diagonal entry.
   std::optional<Score> solve_into(double lambda, bool with_trace, SolveBuffers& buffers) const {
+    const auto p = static_cast<std::size_t>(degree_);
     const auto d = static_cast<std::size_t>(points_.dimension());
-    buffers.rhs.assign(right_side_.begin(), right_side_.end());
-    bool factored = false;
+    buffers.norms.resize(free_count_);
+    for (std::size_t i = 0; i < free_count_; ++i) buffers.norms[i] = gram_.at(i, i);
     if (lambda > 0.0) {
-      for (std::size_t k = 0; k < coupling_.size(); ++k) buffers.rhs[k] -= lambda * coupling_[k];
-      factored = buffers.matrix.factor_sum(gram_, free_penalty_, lambda);
+      // The data's R row by row, merged with the penalty rows √λ r_q by
+      // first column (BandedQr's order): O((n + penalty rows) p²) per λ,
+      // whatever the number of points.
+      const double root = std::sqrt(lambda);
+      buffers.qr.reset(free_count_, degree_, d);
+      std::size_t q = 0;
+      const auto add_penalty_rows_to = [&](std::size_t column) {
+        for (; q < penalty_first_.size() && penalty_first_[q] <= column; ++q)
+          buffers.qr.add_row(penalty_first_[q], std::span<const double>(penalty_values_.data() + q * (p + 1), p + 1),
+                             std::span<const double>(penalty_targets_.data() + q * d, d), root);
+      };
+      for (std::size_t j = 0; j < free_count_; ++j) {
+        add_penalty_rows_to(j);
+        buffers.qr.add_row(j, data_.row(j), data_.right_side(j), 1.0);
+      }
+      add_penalty_rows_to(free_count_);
+      for (std::size_t i = 0; i < free_count_; ++i) buffers.norms[i] += lambda * free_penalty_.at(i, i);
     } else {
-      buffers.matrix = gram_;
-      factored = buffers.matrix.factor();
+      buffers.qr = data_;
     }
-    if (!factored) return std::nullopt;
-    buffers.matrix.solve(buffers.rhs, d);
+    if (!buffers.qr.regular(buffers.norms)) return std::nullopt;
+    buffers.rhs.resize(free_count_ * d);
+    buffers.qr.solve(buffers.rhs);
     Score score;
     score.residual_sum = residual_sum(buffers.rhs);
     const std::size_t fixed = count_ - free_count_;
     if (lambda == 0.0) {
       score.trace = static_cast<double>(count_);
     } else if (with_trace) {
+      buffers.qr.factored_normal_matrix(buffers.matrix);
       score.trace = static_cast<double>(fixed) + buffers.matrix.trace_of_inverse_times(gram_);
     } else {
       score.trace = kNotANumber;
@@ -339,27 +359,26 @@ class FitSystem {
     return score;
   }
 
-  /// Adds row `row` of the design to G and Bᵀ P̃ (free columns only).
-  void accumulate_row(std::size_t row) {
+  /// A row of p+1 values for the columns column0 .. column0 + p over all
+  /// n+1 control points, as the free columns see it: `free_values` for the
+  /// free columns from the one returned on, and the fixed columns' share
+  /// (interpolated ends: value × P_0 or P_m) taken off `target` (d values).
+  std::size_t free_row(std::size_t column0, const double* values, double* target,
+                       std::vector<double>& free_values) const {
     const auto p = static_cast<std::size_t>(degree_);
     const auto d = static_cast<std::size_t>(points_.dimension());
-    const double* values = basis_.data() + row * (p + 1);
-    const double* target = targets_.data() + row * d;
-    const std::size_t column0 = spans_[row] - p;
-    const double weight = weight_of(row);
-    if (weight == 0.0) return;
+    const std::size_t first = column0 < first_column_ ? 0 : column0 - first_column_;
+    std::fill(free_values.begin(), free_values.end(), 0.0);
     for (std::size_t r = 0; r <= p; ++r) {
-      const std::size_t a = column0 + r;
-      if (a < first_column_ || a >= first_column_ + free_count_) continue;
-      const std::size_t i = a - first_column_;
-      const double weighted = weight * values[r];
-      for (std::size_t c = 0; c < d; ++c) right_side_[i * d + c] += weighted * target[c];
-      for (std::size_t s = 0; s <= r; ++s) {
-        const std::size_t b = column0 + s;
-        if (b < first_column_) continue;
-        gram_.at(i, b - first_column_) += weighted * values[s];
+      const std::size_t column = column0 + r;
+      if (column >= first_column_ && column < first_column_ + free_count_) {
+        free_values[column - first_column_ - first] = values[r];
+      } else if (values[r] != 0.0) {  // a fixed end control point
+        const auto fixed = column == 0 ? points_[0] : points_[points_.size() - 1];
+        for (std::size_t c = 0; c < d; ++c) target[c] -= values[r] * fixed[c];
       }
     }
+    return first;
   }
 
   /// The weight of design row `row` (1 without weights).
@@ -399,11 +418,11 @@ class FitSystem {
   std::vector<std::size_t> spans_;
   std::vector<double> basis_;    // rows x (p+1)
   std::vector<double> targets_;  // rows x d: P̃_k
-  SymmetricBand gram_;
-  std::vector<double> right_side_;
-  SymmetricBand penalty_;               // Ω over all columns
+  SymmetricBand gram_;           // G = BᵀWB over the free columns
+  BandedQr data_;                // the data rows rotated into R
   SymmetricBand free_penalty_{0, 1};    // Ω over the free columns
-  std::vector<double> coupling_;        // K (interpolated ends)
+  std::vector<std::size_t> penalty_first_;  // the penalty rows over the free columns
+  std::vector<double> penalty_values_, penalty_targets_;
 };
 
 /// GCV(λ) from a solution: (RSS / N) / (1 − tr H / N)², NaN when tr H >= N.

@@ -1,29 +1,21 @@
 #pragma once
-// A symmetric positive definite band matrix (half-bandwidth p), factored in
-// place as L D Lᵀ (L unit lower triangular with p subdiagonals), with the
-// band of its inverse by the recursion of Hutchinson & de Hoog (1985,
-// "Smoothing noisy data with spline functions", Numer. Math. 47, eq. 2.6).
-// The normal equations of every fit in fit.cpp are of this kind.
+// A symmetric band matrix (half-bandwidth p) in lower band storage, and the
+// band of the inverse of one held as L D Lᵀ (L unit lower triangular with p
+// subdiagonals) by the recursion of Hutchinson & de Hoog (1985, "Smoothing
+// noisy data with spline functions", Numer. Math. 47, eq. 2.6): the trace of
+// the hat matrix that GCV needs. The fits of fit.cpp keep G = BᵀWB and Ω here
+// and take L D Lᵀ = RᵀR from their QR factorization (banded_qr.hpp).
 //
 // Why ours rather than Eigen: Eigen 3.4 has band storage (BandMatrix) but no
-// band factorization; its sparse LDLᵀ (SimplicialLDLT) would solve the system
-// in O(n p²) too, but the trace of the hat matrix needs the band of the
-// inverse, which is computed from the entries of L and D themselves, and a
-// sparse factor (column-compressed, possibly permuted) makes that recursion
-// awkward and slower. LDLᵀ without pivoting is stable for symmetric positive
-// definite matrices (Golub & Van Loan, Matrix Computations, 4th ed., §4.2,
-// §4.3.6, Algorithm 4.3.6 in its LDLᵀ form); no square roots, so the
-// recursion reads D directly.
+// band factorization, and the trace needs the band of the inverse, computed
+// from the entries of L and D themselves.
 //
 // Internal to src/interpolation.
 
 #include <algorithm>
 #include <cassert>
 #include <cstddef>
-#include <span>
 #include <vector>
-
-#include "casteljau/interpolation/tolerance.hpp"
 
 
 namespace casteljau::detail {
@@ -60,56 +52,9 @@ class SymmetricBand {
     return sum;
   }
 
-  /// In place: the strict lower band becomes L, the diagonal D, with
-  /// A = L D Lᵀ. False (the matrix left half-factored) when a pivot D_i is
-  /// not above tolerances::kFitSingularPivot times the diagonal entry it came
-  /// from (or is NaN): the matrix is singular to working precision.
-  /// O(n p²).
-  bool factor() noexcept { return factor_rows(nullptr, nullptr, 0.0); }
-
-  /// The same for A = a + factor * b (a and b of one size and bandwidth),
-  /// each row formed just before it is factored, in this matrix's storage
-  /// (reused: no allocation once its size is reached). One pass over a, b
-  /// and the result instead of a sum and then a factorization.
-  bool factor_sum(const SymmetricBand& a, const SymmetricBand& b, double factor) {
-    assert(a.size_ == b.size_ && a.width_ == b.width_);
-    size_ = a.size_;
-    width_ = a.width_;
-    values_.resize(a.values_.size());
-    return factor_rows(&a, &b, factor);
-  }
-
-  /// Solves A X = B after factor(): `rhs` holds n rows of `width` values
-  /// (row-major, a PointArray's layout), overwritten by X. O(n p width).
-  void solve(std::span<double> rhs, std::size_t width) const noexcept {
-    assert(rhs.size() == size_ * width);
-    // Each unknown is accumulated in a register, column by column (the same
-    // operations in the same order as updating it in memory, without the
-    // store-to-load chain that would make each step wait for the last).
-    for (std::size_t i = 0; i < size_; ++i) {  // L y = b
-      const std::size_t low = first_column(i);
-      for (std::size_t c = 0; c < width; ++c) {
-        double value = rhs[i * width + c];
-        for (std::size_t k = low; k < i; ++k) value -= at(i, k) * rhs[k * width + c];
-        rhs[i * width + c] = value;
-      }
-    }
-    for (std::size_t i = 0; i < size_; ++i) {  // D z = y
-      const double inverse = 1.0 / at(i, i);
-      for (std::size_t c = 0; c < width; ++c) rhs[i * width + c] *= inverse;
-    }
-    for (std::size_t i = size_; i-- > 0;) {  // Lᵀ x = z
-      const std::size_t high = last_row(i);
-      for (std::size_t c = 0; c < width; ++c) {
-        double value = rhs[i * width + c];
-        for (std::size_t k = i + 1; k <= high; ++k) value -= at(k, i) * rhs[k * width + c];
-        rhs[i * width + c] = value;
-      }
-    }
-  }
-
-  /// After factor(): tr(A⁻¹ B) = Σ_ij z_ij b_ij for a symmetric band matrix B
-  /// of the same shape (the entries of Z = A⁻¹ outside the band meet zeros of
+  /// When this band holds A = L D Lᵀ (the strict lower band L, the diagonal
+  /// D; BandedQr::factored_normal_matrix): tr(A⁻¹ B) = Σ_ij z_ij b_ij for a
+  /// symmetric band matrix B of the same shape (the entries of Z = A⁻¹ outside the band meet zeros of
   /// B). The band of Z comes from Lᵀ Z = D⁻¹ L⁻¹, whose right side is lower
   /// triangular with diagonal 1/D_i: the upper part of each row i of Z needs
   /// only rows below it,
@@ -146,31 +91,6 @@ class SymmetricBand {
   }
 
  private:
-  /// factor() and factor_sum(): row i (from a + factor b when given) is
-  /// factored with the rows above it, which are done.
-  bool factor_rows(const SymmetricBand* a, const SymmetricBand* b, double factor) noexcept {
-    std::vector<double> scaled(width_);  // L_ik D_k for the current row
-    for (std::size_t i = 0; i < size_; ++i) {
-      if (a != nullptr) {
-        const std::size_t row = i * width_;
-        for (std::size_t k = row; k < row + width_; ++k) values_[k] = a->values_[k] + factor * b->values_[k];
-      }
-      const std::size_t low = first_column(i);
-      for (std::size_t j = low; j < i; ++j) {
-        double sum = at(i, j);
-        for (std::size_t k = low; k < j; ++k) sum -= scaled[k - low] * at(j, k);
-        scaled[j - low] = sum;          // L_ij D_j
-        at(i, j) = sum / at(j, j);      // L_ij
-      }
-      const double diagonal = at(i, i);
-      double pivot = diagonal;
-      for (std::size_t k = low; k < i; ++k) pivot -= scaled[k - low] * at(i, k);
-      if (!(pivot > tolerances::kFitSingularPivot * diagonal)) return false;
-      at(i, i) = pivot;
-    }
-    return true;
-  }
-
   std::size_t size_;
   std::size_t width_;
   std::vector<double> values_;

@@ -5,9 +5,11 @@
 // penalty λ ∫ ‖C''‖² and λ chosen by generalized cross-validation (Craven &
 // Wahba 1979), and least squares refined until a tolerance is met.
 //
-// Every fit is one symmetric positive definite banded system (half-bandwidth
-// p) in the unknown control points, solved by a banded LDLᵀ in O(m p² + n p d);
-// the d coordinates share the factorization. "Error" everywhere below is the
+// Every fit is one banded least-squares problem (half-bandwidth p) in the
+// unknown control points, solved by Givens rotations into a banded R, row by
+// row as FITPACK does (Dierckx 1993), in O(m p² + n p d): its error grows with
+// the design matrix's condition number, not its square as the normal
+// equations' would (issue 43); the d coordinates share the rotations. "Error" everywhere below is the
 // distance ‖C(t_i) − P_i‖ at the point's own parameter: an upper bound of the
 // distance from P_i to the curve (the parameters are not re-projected).
 
@@ -108,8 +110,9 @@ struct SmoothingOptions {
 
 /// The B-spline minimizing Σ ‖C(t_i) − P_i‖² + λ ∫_{t_0}^{t_m} ‖C''(u)‖² du.
 /// The penalty's Gram matrix Ω_jk = ∫ N_j'' N_k'' is exact (Gauss–Legendre
-/// with p−1 nodes per knot span); the normal equations (BᵀB + λΩ) Q = BᵀP
-/// are banded. λ has scipy's meaning: with p = 3, knots at every parameter
+/// with p−1 nodes per knot span, Ω = Σ_q r_q r_qᵀ): the rows √λ r_q are
+/// rotated in beside the data's, so the penalized problem is least squares
+/// too, never the normal equations (BᵀB + λΩ) Q = BᵀP. λ has scipy's meaning: with p = 3, knots at every parameter
 /// and free ends, the result equals make_smoothing_spline(t, y, lam=λ) for
 /// each coordinate. The effective degrees of freedom tr H = tr((BᵀB + λΩ)⁻¹
 /// BᵀB) (plus 2 for interpolated ends) come from the band of the inverse
@@ -120,10 +123,11 @@ struct SmoothingOptions {
 /// minimum on the grid when GCV has several local ones). Errors: those of
 /// fit_least_squares, degree below 2, λ negative or not finite, λ = 0 with
 /// more control points than points, a singular system.
-/// A λ that leaves the normal equations singular is named too large (λ tr Ω
+/// A λ that leaves the system singular is named too large (λ tr Ω
 /// swamps tr(BᵀB): the data are lost in rounding) or too small (it cannot
 /// determine more control points than points), with the range GCV searches.
-/// O(m p² + n p³) per λ; about 100 values of λ for GCV, each reported to
+/// The data's rows are rotated once, O(m p²); each λ merges R's rows with the
+/// penalty's, O(n p²); about 100 values of λ for GCV, each reported to
 /// `progress` (the fraction of the search's evaluations done).
 Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const double> parameters,
                                    const SmoothingOptions& options, Progress progress = {});

@@ -7,13 +7,14 @@ namespace casteljau::tolerances {
 
 // --- Fitting (interpolation/fit.hpp) -----------------------------------------
 
-/// Smallest pivot D_i of the banded LDLᵀ factorization of a fit's normal
-/// equations, relative to the diagonal entry A_ii it came from, below which
-/// the system counts as singular (dimensionless). For a symmetric positive
-/// definite matrix D_i / A_ii >= 1 / cond(A); the rounding of D_i is about
-/// (p+1) ulps of A_ii, so a ratio under 1e-13 (500 ulps) cannot be told
-/// from zero: the data do not determine the control points (too few
-/// parameters in some knot span, λ = 0 with more control points than points).
+/// Smallest pivot D_i = R_ii² of a fit's system A = RᵀR = G + λΩ (R from
+/// its rotations), relative to the diagonal entry A_ii (the squared norm of
+/// column i), below which the system counts as singular (dimensionless):
+/// D_i / A_ii >= 1 / cond(A). A ratio under 1e-13 (cond(R) above 3e6 in that
+/// column) means the data do not determine the control points (too few
+/// parameters in some knot span, λ = 0 with more control points than points);
+/// the seed's head fitted with as many control points as points (cond(R) =
+/// 3.0e6, so 1 / cond(A) = 1.1e-13) still passes.
 inline constexpr double kFitSingularPivot = 1e-13;
 
 /// The range of λ that GCV searches, in decades around the scale
