@@ -524,7 +524,7 @@ def make_smoothing_spline(x, y, w=None, lam=None):
     scipy.interpolate.make_smoothing_spline (fit_smoothing with degree 3, a knot at every x, free ends).
 
     Differs from scipy: weights w are not supported (ValueError unless None); lam=None chooses lam by casteljau's
-    GCV search (a grid then golden section, Craven & Wahba 1979), which may pick a slightly different lam than
+    GCV search (a grid then Brent's method, Craven & Wahba 1979), which may pick a slightly different lam than
     scipy's; y may also be (n, d) (one lam for all columns).
     """
     if w is not None:

@@ -513,15 +513,13 @@ int grid_steps() {
 }
 
 /// One GCV search's evaluations, reported as the fraction of those it makes
-/// at most: the grid, the golden section on a bracket of two grid steps
-/// (kGcvRefinementDecades wide at the end) and the final solve.
+/// at most: the grid, its extension beyond an edge, Brent's search and the
+/// final solve.
 class GcvProgress {
  public:
   GcvProgress(Progress progress, int grid_points) : progress_(progress) {
-    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-    const double golden = std::ceil(std::log(tolerances::kGcvRefinementDecades /
-                                             (2.0 * tolerances::kGcvGridStepDecades)) / std::log(ratio));
-    total_ = static_cast<double>(grid_points) + 2.0 + std::max(golden, 0.0) + 1.0;
+    const double beyond = tolerances::kGcvSearchDecadesBeyond / tolerances::kGcvGridStepDecades;
+    total_ = static_cast<double>(grid_points) + beyond + tolerances::kGcvBrentEvaluations + 1.0;
   }
   void step() {
     done_ += 1.0;
@@ -546,9 +544,66 @@ double gcv_at(const FitSystem& system, double scale, double x, std::size_t point
   return std::isnan(score) ? std::numeric_limits<double>::infinity() : score;
 }
 
-/// The λ minimizing GCV: the best point of a grid over log10 λ, then
-/// golden-section search in the bracket of its two neighbours. Nothing when
-/// GCV is undefined at every grid point.
+/// The minimum of f on [a, b] to within `width`, from a point x inside with
+/// f(x) = fx below f at both ends: Brent's method (Brent 1973, "Algorithms for
+/// Minimization without Derivatives", ch. 5; the form of Numerical Recipes,
+/// 3rd ed., §10.3): a parabola through the three best points where it falls
+/// inside the bracket and shrinks it, a golden-section step otherwise. The
+/// minimizer and its value; at most `evaluations` calls of f.
+template <class F>
+std::pair<double, double> brent_minimum(F&& f, double a, double b, double x, double fx, double width,
+                                        int evaluations) {
+  constexpr double kGolden = 0.3819660112501051;  // (3 − √5) / 2
+  const double tol1 = 0.25 * width, tol2 = 2.0 * tol1;
+  double w = x, v = x, fw = fx, fv = fx, d = 0.0, e = 0.0;
+  for (int i = 0; i < evaluations; ++i) {
+    const double middle = 0.5 * (a + b);
+    if (std::abs(x - middle) <= tol2 - 0.5 * (b - a)) break;
+    bool golden = true;
+    if (std::abs(e) > tol1) {  // a parabola through x, w, v
+      const double r = (x - w) * (fx - fv);
+      double q = (x - v) * (fx - fw);
+      double p = (x - v) * q - (x - w) * r;
+      q = 2.0 * (q - r);
+      if (q > 0.0) p = -p;
+      q = std::abs(q);
+      const double previous = e;
+      e = d;
+      if (std::abs(p) < std::abs(0.5 * q * previous) && p > q * (a - x) && p < q * (b - x)) {
+        d = p / q;
+        golden = false;
+        const double u = x + d;
+        if (u - a < tol2 || b - u < tol2) d = middle >= x ? tol1 : -tol1;
+      }
+    }
+    if (golden) {
+      e = x >= middle ? a - x : b - x;
+      d = kGolden * e;
+    }
+    const double u = std::abs(d) >= tol1 ? x + d : x + (d >= 0.0 ? tol1 : -tol1);
+    const double fu = f(u);
+    if (fu <= fx) {
+      (u >= x ? a : b) = x;
+      v = w, fv = fw, w = x, fw = fx, x = u, fx = fu;
+    } else {
+      (u < x ? a : b) = u;
+      if (fu <= fw || w == x) {
+        v = w, fv = fw, w = u, fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u, fv = fu;
+      }
+    }
+  }
+  return {x, fx};
+}
+
+/// The λ minimizing GCV: the best point of a grid over log10 λ (extended
+/// beyond the top of the range while GCV keeps falling there, by up to
+/// kGcvSearchDecadesBeyond: smooth data whose minimum lies above λ₀ 10^6,
+/// scipy's gcvspl case at λ = 0.39 where the range ended at 0.021; an
+/// interior local minimum before one at the bottom edge), then Brent's
+/// method in the bracket of its two neighbours. Nothing when GCV is
+/// undefined at every grid point.
 std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_count, GcvProgress& progress) {
   const double scale = system.smoothing_scale();
   const double step = tolerances::kGcvGridStepDecades;
@@ -556,41 +611,42 @@ std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_c
   const int steps = grid_steps();
   SolveBuffers buffers;
   const auto at = [&](double x) { return gcv_at(system, scale, x, point_count, buffers, progress); };
-  double best_x = 0.0, best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i <= steps; ++i) {
-    const double x = low + i * step;
-    const double score = at(x);
-    if (score < best) {
-      best = score;
-      best_x = x;
+  std::vector<double> scores;
+  for (int i = 0; i <= steps; ++i) scores.push_back(at(low + i * step));
+  auto best = std::min_element(scores.begin(), scores.end());
+  if (!std::isfinite(*best)) return std::nullopt;
+  const double lower = low;
+  double upper = low + steps * step;
+  // Beyond the top edge where the best score lies there: on while GCV falls
+  // (the first point where it rises again closes the bracket).
+  const int beyond = static_cast<int>(std::lround(tolerances::kGcvSearchDecadesBeyond / step));
+  if (best == scores.end() - 1) {
+    for (int i = 0; i < beyond; ++i) {
+      const double score = at(upper + step);
+      const bool falling = score < scores.back();
+      upper += step;
+      scores.push_back(score);
+      if (!falling) break;
     }
   }
-  if (!std::isfinite(best)) return std::nullopt;
-  // Golden section on [best_x − step, best_x + step] (Kiefer 1953): the
-  // bracket shrinks by 0.618 per evaluation; a minimum on the grid's edge
-  // stays inside the searched range.
-  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = std::max(best_x - step, low), b = std::min(best_x + step, tolerances::kGcvSearchDecadesAbove);
-  double c = b - ratio * (b - a), e = a + ratio * (b - a);
-  double fc = at(c), fe = at(e);
-  while (b - a > tolerances::kGcvRefinementDecades) {
-    if (fc <= fe) {
-      b = e;
-      e = c;
-      fe = fc;
-      c = b - ratio * (b - a);
-      fc = at(c);
-    } else {
-      a = c;
-      c = e;
-      fc = fe;
-      e = a + ratio * (b - a);
-      fe = at(e);
-    }
+  best = std::min_element(scores.begin(), scores.end());
+  // At the bottom edge GCV may fall on towards interpolation, the 0/0 limit
+  // of RSS / (n − tr H)² as λ → 0, below the true minimum (222 noisy points
+  // with two 7.5e-5 apart: 0.151 at 221.999 degrees of freedom against 0.241
+  // at the minimum, 21.6): an interior local minimum of the grid is taken
+  // before it; without one (data without noise) interpolation is the answer.
+  // The bottom edge is the lowest λ with a score (those below interpolate
+  // within kGcvNearInterpolation: +∞).
+  const auto bottom = std::find_if(scores.begin(), scores.end(), [](double score) { return std::isfinite(score); });
+  if (best == bottom) {
+    for (auto i = bottom + 1; i + 1 < scores.end(); ++i)
+      if (*i <= *(i - 1) && *i <= *(i + 1) && (best == bottom || *i < *best)) best = i;
   }
-  double x = best_x;
-  if (std::min(fc, fe) < best) x = fc <= fe ? c : e;
-  return scale * std::pow(10.0, x);
+  const double best_x = lower + static_cast<double>(best - scores.begin()) * step;
+  const double a = std::max(best_x - step, lower), b = std::min(best_x + step, upper);
+  const auto [x, value] = brent_minimum(at, a, b, best_x, *best, tolerances::kGcvRefinementDecades,
+                                        static_cast<int>(tolerances::kGcvBrentEvaluations));
+  return scale * std::pow(10.0, value <= *best ? x : best_x);
 }
 
 }  // namespace

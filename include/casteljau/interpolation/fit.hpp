@@ -119,8 +119,11 @@ struct SmoothingOptions {
 /// (Hutchinson & de Hoog 1985), O(n p²). Without λ, GCV(λ) is minimized over
 /// log λ: a grid (tolerances::kGcvGridStepDecades) from λ₀ 10^-kGcvSearchDecadesBelow
 /// to λ₀ 10^kGcvSearchDecadesAbove around the scale λ₀ = tr(BᵀB) / tr(Ω),
-/// then golden-section search around the best grid point (the global
-/// minimum on the grid when GCV has several local ones). Errors: those of
+/// extended beyond the top while GCV falls there (kGcvSearchDecadesBeyond),
+/// then Brent's method around the best grid point (the global minimum on the
+/// grid when GCV has several local ones, an interior one before the bottom
+/// edge, where GCV may fall towards interpolation's 0/0). The λ chosen is
+/// BSplineFit::smoothing. Errors: those of
 /// fit_least_squares, degree below 2, λ negative or not finite, λ = 0 with
 /// more control points than points, a singular system.
 /// A λ that leaves the system singular is named too large (λ tr Ω
