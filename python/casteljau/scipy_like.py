@@ -523,18 +523,23 @@ def make_smoothing_spline(x, y, w=None, lam=None):
     """The cubic smoothing spline minimizing sum (y_i - g(x_i))^2 + lam * integral g''^2, like
     scipy.interpolate.make_smoothing_spline (fit_smoothing with degree 3, a knot at every x, free ends).
 
-    Differs from scipy: weights w are not supported (ValueError unless None); lam=None chooses lam by casteljau's
-    GCV search (a grid then Brent's method, Craven & Wahba 1979), which may pick a slightly different lam than
-    scipy's; y may also be (n, d) (one lam for all columns).
+    w: None (all 1) or one positive weight per point multiplying its squared residual (not squared), as
+    scipy's. Differs from scipy: lam=None chooses lam by casteljau's GCV search (a grid then Brent's method,
+    Craven & Wahba 1979), which may pick a slightly different lam than scipy's (with weights, casteljau's GCV
+    weighs the residuals as the fit does, scipy 1.10's leaves them unweighted); y may also be (n, d) (one lam
+    for all columns).
     """
-    if w is not None:
-        raise ValueError("w is not supported: casteljau's smoothing spline weighs every point equally")
     y_array = _real_array(y, "y")
     points, trailing = _as_points(y_array)
     x = _check_x(x, points.shape[0])
+    weights = None
+    if w is not None:
+        weights = np.ascontiguousarray(w, dtype=float)
+        if weights.shape != (points.shape[0],) or not np.all(weights > 0):
+            raise ValueError("Invalid vector of weights")  # scipy's words
     if lam is not None:
         lam = float(lam)
-    fit = _c.fit_smoothing(points, x, degree=3, control_point_count=0, smoothing=lam, ends="free")
+    fit = _c.fit_smoothing(points, x, degree=3, control_point_count=0, smoothing=lam, ends="free", weights=weights)
     return BSpline._from_curve(fit.curve, trailing, True)
 
 

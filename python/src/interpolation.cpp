@@ -50,6 +50,15 @@ FitEnds fit_ends_from(const std::string& name) {
   throw py::value_error(fmt::format("unknown fit ends '{}', expected interpolated or free", name));
 }
 
+/// A weighted fit's weights from Python: None (empty: all 1) or one per
+/// point (ValueError for an empty array; the library checks the rest).
+std::vector<double> weights_from(const py::object& weights) {
+  if (weights.is_none()) return {};
+  std::vector<double> w = values_from(weights, "weights");
+  if (w.empty()) throw py::value_error("weights is empty, give one weight per point or None");
+  return w;
+}
+
 /// A count given from Python as a signed integer, checked >= 0.
 std::size_t count_from(long long value, const char* what) {
   if (value < 0) throw py::value_error(fmt::format("{} is {}, it must be >= 0", what, value));
@@ -285,9 +294,7 @@ void bind_fit(py::module_& module) {
         PointArray data = points_from(points, "points");
         std::vector<double> t = values_from(parameters, "parameters");
         std::vector<double> u = values_from(knots, "knots");
-        const std::vector<double> w = weights.is_none() ? std::vector<double>{} : values_from(weights, "weights");
-        if (!weights.is_none() && w.empty())
-          throw py::value_error("weights is empty, give one weight per point or None");
+        const std::vector<double> w = weights_from(weights);
         const FitEnds fit_ends = fit_ends_from(ends);
         return unwrap(without_gil([&] { return fit_least_squares_on_knots(data, t, degree, std::move(u), w, fit_ends); }));
       },
@@ -302,7 +309,7 @@ void bind_fit(py::module_& module) {
   module.def(
       "fit_smoothing",
       [](const py::object& points, const py::object& parameters, int degree, long long control_point_count,
-         std::optional<double> smoothing, const std::string& ends) {
+         std::optional<double> smoothing, const std::string& ends, const py::object& weights) {
         PointArray data = points_from(points, "points");
         std::vector<double> t = values_from(parameters, "parameters");
         SmoothingOptions options;
@@ -310,15 +317,19 @@ void bind_fit(py::module_& module) {
         options.control_point_count = count_from(control_point_count, "control_point_count");
         options.smoothing = smoothing;
         options.ends = fit_ends_from(ends);
+        options.weights = weights_from(weights);
         return unwrap(without_gil([&] { return fit_smoothing(data, t, options); }));
       },
       py::arg("points"), py::arg("parameters"), py::kw_only(), py::arg("degree") = 3,
       py::arg("control_point_count") = 0, py::arg("smoothing") = py::none(), py::arg("ends") = "free",
-      "The B-spline minimizing sum |C(t_i) - P_i|^2 + lambda int |C''|^2 (Reinsch 1967; lambda by GCV, Craven & Wahba "
-      "1979, when smoothing is None). The fields of the C++ SmoothingOptions are keyword arguments: degree >= 2, "
+      py::arg("weights") = py::none(),
+      "The B-spline minimizing sum w_i |C(t_i) - P_i|^2 + lambda int |C''|^2 (Reinsch 1967; lambda by GCV, Craven & "
+      "Wahba 1979, when smoothing is None). The fields of the C++ SmoothingOptions are keyword arguments: degree >= 2, "
       "control_point_count (0: a knot at every interior parameter, the smoothing spline itself), smoothing (lambda "
-      ">= 0 or None), ends ('free' or 'interpolated'). With degree 3, 0 control points and free ends it equals "
-      "scipy's make_smoothing_spline(t, y, lam=lambda) per coordinate. Returns a BSplineFit.");
+      ">= 0 or None), ends ('free' or 'interpolated'), weights (None: all 1, or one w_i >= 0 per point, not "
+      "squared). With degree 3, 0 control points and free ends it equals scipy's make_smoothing_spline(t, y, w=w, "
+      "lam=lambda) per coordinate (GCV weighs the residuals as the fit does; scipy 1.10's GCV leaves them "
+      "unweighted). Returns a BSplineFit.");
 
   module.def(
       "fit_to_tolerance",

@@ -70,6 +70,22 @@ Status check_fit_input(const PointArray& points, std::span<const double> paramet
   return {};
 }
 
+/// Checks a weighted fit's weights: none (all 1), or one finite w_i >= 0 per point.
+Status check_weights(std::span<const double> weights, std::size_t point_count) {
+  if (weights.empty()) return {};
+  if (weights.size() != point_count) {
+    return Error{std::to_string(weights.size()) + " weights for " + std::to_string(point_count) +
+                 " points, a weighted fit needs one weight per point"};
+  }
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    if (auto finite = check_finite(weights[i], "weight " + std::to_string(i)); !finite) return finite.error();
+    if (weights[i] < 0.0) {
+      return Error{"weight " + std::to_string(i) + " is " + number_text(weights[i]) + ", weights must be >= 0"};
+    }
+  }
+  return {};
+}
+
 /// Checks n+1 control points of degree p against m+1 points.
 Status check_control_point_count(std::size_t count, int degree, std::size_t point_count) {
   const std::size_t needed = static_cast<std::size_t>(degree) + 1;
@@ -434,20 +450,24 @@ double gcv_score(double residual_sum, double trace, std::size_t point_count) {
 }
 
 /// The BSplineFit of a solution: the curve, its errors at the parameters
-/// (evaluated on the curve itself, not from the design rows), λ and GCV.
+/// (evaluated on the curve itself, not from the design rows), λ and GCV (from
+/// the weighted residuals, as the search weighs them, Craven & Wahba 1979;
+/// scipy 1.10's GCV leaves them unweighted).
 BSplineFit make_result(const FitSystem& system, Solution solution, const PointArray& points,
-                       std::span<const double> parameters, int degree, double lambda) {
+                       std::span<const double> parameters, int degree, double lambda,
+                       std::span<const double> weights = {}) {
   BSplineCurve curve = BSplineCurve::from_trusted(degree, std::vector<double>(system.knots().begin(), system.knots().end()),
                                                   std::move(solution.control_points));
   const auto d = static_cast<std::size_t>(points.dimension());
   std::vector<double> fitted(points.size() * d);
   points_at(curve, parameters, fitted);
   std::vector<double> errors(points.size());
-  double max_error = 0.0, sum = 0.0;
+  double max_error = 0.0, sum = 0.0, weighted = 0.0;
   std::size_t worst = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     errors[i] = distance(points[i], std::span<const double>(fitted.data() + i * d, d));
     sum += errors[i] * errors[i];
+    weighted += (weights.empty() ? 1.0 : weights[i]) * errors[i] * errors[i];
     if (errors[i] > max_error) {
       max_error = errors[i];
       worst = i;
@@ -456,7 +476,7 @@ BSplineFit make_result(const FitSystem& system, Solution solution, const PointAr
   const double rms = std::sqrt(sum / static_cast<double>(points.size()));
   const double trace = solution.trace;
   return BSplineFit{std::move(curve), std::move(errors), max_error, worst, rms, lambda, trace,
-                    gcv_score(sum, trace, points.size()), false};
+                    gcv_score(weighted, trace, points.size()), false};
 }
 
 Error singular_error(std::size_t control_points, double lambda) {
@@ -693,18 +713,7 @@ Expected<BSplineFit> fit_least_squares_on_knots(const PointArray& points, std::s
   }
   const std::size_t count = knots.size() - width;  // n + 1
   if (auto valid = validate_knots(knots, degree, count); !valid) return valid.error();
-  if (!weights.empty()) {
-    if (weights.size() != points.size()) {
-      return Error{std::to_string(weights.size()) + " weights for " + std::to_string(points.size()) +
-                   " points, a weighted fit needs one weight per point"};
-    }
-    for (std::size_t i = 0; i < weights.size(); ++i) {
-      if (auto finite = check_finite(weights[i], "weight " + std::to_string(i)); !finite) return finite.error();
-      if (weights[i] < 0.0) {
-        return Error{"weight " + std::to_string(i) + " is " + number_text(weights[i]) + ", weights must be >= 0"};
-      }
-    }
-  }
+  if (auto valid = check_weights(weights, points.size()); !valid) return valid.error();
   const double lower = knots[width - 1], upper = knots[count];
   for (std::size_t i = 0; i < parameters.size(); ++i) {
     if (parameters[i] < lower || parameters[i] > upper) {
@@ -727,7 +736,7 @@ Expected<BSplineFit> fit_least_squares_on_knots(const PointArray& points, std::s
   const FitSystem system(points, parameters, degree, std::move(knots), ends, false, weights);
   auto solution = system.solve(0.0, false);
   if (!solution) return singular_error(count, 0.0);
-  return make_result(system, std::move(*solution), points, parameters, degree, 0.0);
+  return make_result(system, std::move(*solution), points, parameters, degree, 0.0, weights);
 }
 
 Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const double> parameters,
@@ -738,6 +747,7 @@ Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const dou
     return Error{"smoothing needs degree 2 or more (the penalty integrates C''), got degree " +
                  std::to_string(degree)};
   }
+  if (auto valid = check_weights(options.weights, points.size()); !valid) return valid.error();
   if (options.smoothing) {
     const double lambda = *options.smoothing;
     if (auto finite = check_finite(lambda, "the smoothing λ"); !finite) return finite.error();
@@ -753,7 +763,7 @@ Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const dou
     }
     knots = approximation_knots(parameters, degree, options.control_point_count);
   }
-  const FitSystem system(points, parameters, degree, std::move(knots), options.ends, true);
+  const FitSystem system(points, parameters, degree, std::move(knots), options.ends, true, options.weights);
   const std::size_t count = system.control_point_count();
   double lambda = 0.0;
   bool from_gcv = false;
@@ -776,7 +786,7 @@ Expected<BSplineFit> fit_smoothing(const PointArray& points, std::span<const dou
     if (!from_gcv) return smoothing_singular_error(system, lambda, points.size());
     return singular_error(count, lambda);
   }
-  BSplineFit fit = make_result(system, std::move(*solution), points, parameters, degree, lambda);
+  BSplineFit fit = make_result(system, std::move(*solution), points, parameters, degree, lambda, options.weights);
   fit.smoothing_from_gcv = from_gcv;
   progress(1.0);
   return fit;

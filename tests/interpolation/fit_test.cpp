@@ -316,6 +316,44 @@ TEST(FitSmoothing, GcvChoiceMinimizesGcv) {
   EXPECT_LT(fit->effective_degrees_of_freedom, 30.0);
 }
 
+// Weights multiply the squared residuals: weights all equal to c are the
+// unweighted fit at λ / c (the objective is c times the other), and weight 0
+// leaves a point out of the data term; bad weights are named. (scipy's
+// make_smoothing_spline(w=...) in tests/python/test_module_scipy_like.py.)
+TEST(FitSmoothing, WeightsMultiplyTheSquaredResiduals) {
+  std::vector<double> t;
+  const PointArray points = noisy_sine(60, 5, t);
+  SmoothingOptions plain;
+  plain.smoothing = 0.01;
+  const auto unweighted = fit_smoothing(points, t, plain);
+  ASSERT_TRUE(unweighted) << message_of(unweighted);
+  SmoothingOptions scaled = plain;
+  scaled.smoothing = 0.04;
+  scaled.weights.assign(60, 4.0);
+  const auto weighted = fit_smoothing(points, t, scaled);
+  ASSERT_TRUE(weighted) << message_of(weighted);
+  const PointArray& a = unweighted->curve.control_points();
+  const PointArray& b = weighted->curve.control_points();
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i][0], b[i][0], 1e-12) << i;
+  EXPECT_NEAR(weighted->effective_degrees_of_freedom, unweighted->effective_degrees_of_freedom, 1e-10);
+  // A point with weight 0 may lie anywhere: moving it changes nothing.
+  SmoothingOptions dropped = plain;
+  dropped.weights.assign(60, 1.0);
+  dropped.weights[20] = 0.0;
+  PointArray moved = points;
+  moved[20][0] += 100.0;  // y(t): the sine's points are 1-D
+  const auto left_out = fit_smoothing(points, t, dropped), moved_out = fit_smoothing(moved, t, dropped);
+  ASSERT_TRUE(left_out && moved_out);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    EXPECT_NEAR(left_out->curve.control_points()[i][0], moved_out->curve.control_points()[i][0], 1e-12) << i;
+  SmoothingOptions bad = plain;
+  bad.weights.assign(59, 1.0);
+  EXPECT_EQ(message_of(fit_smoothing(points, t, bad)), "59 weights for 60 points, a weighted fit needs one weight per point");
+  bad.weights.assign(60, 1.0);
+  bad.weights[7] = -1.0;
+  EXPECT_EQ(message_of(fit_smoothing(points, t, bad)), "weight 7 is -1, weights must be >= 0");
+}
+
 TEST(FitSmoothing, EffectiveDegreesOfFreedomFallWithLambdaTowardsALine) {
   std::vector<double> t;
   const PointArray points = noisy_sine(40, 3, t);

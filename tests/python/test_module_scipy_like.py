@@ -475,6 +475,24 @@ def test_make_smoothing_spline_with_fixed_lam_matches_scipy(lam):
     assert relative(ours(xs, 1), theirs(xs, 1)) <= 1e-8
 
 
+@pytest.mark.parametrize("lam", [1e-3, 0.1, 10.0])
+def test_make_smoothing_spline_with_weights_matches_scipy(lam):
+    # scipy weighs each squared residual by w (not squared), as casteljau does.
+    rng = np.random.default_rng(702)
+    x = np.sort(rng.uniform(0, 5, 40))
+    y = np.cos(2 * x) + rng.normal(scale=0.2, size=40)
+    w = rng.uniform(0.1, 5.0, 40)
+    ours, theirs = sl.make_smoothing_spline(x, y, w=w, lam=lam), si.make_smoothing_spline(x, y, w=w, lam=lam)
+    xs = np.linspace(x[0], x[-1], 151)
+    assert relative(ours(xs), theirs(xs)) <= 1e-9
+    # Weights that all equal c are the unweighted spline at lam / c.
+    scaled = sl.make_smoothing_spline(x, y, w=np.full(40, 4.0), lam=4.0 * lam)
+    assert relative(scaled(xs), sl.make_smoothing_spline(x, y, lam=lam)(xs)) <= 1e-12
+    for bad in (np.r_[np.ones(39), 0.0], -np.ones(40), np.ones(39)):
+        with pytest.raises(ValueError, match="Invalid vector of weights"):
+            sl.make_smoothing_spline(x, y, w=bad, lam=lam)
+
+
 def test_make_smoothing_spline_by_gcv_is_close_to_scipy():
     rng = np.random.default_rng(701)
     x = np.sort(rng.uniform(0, 5, 50))

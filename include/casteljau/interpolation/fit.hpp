@@ -106,9 +106,13 @@ struct SmoothingOptions {
   /// λ >= 0; empty: the λ minimizing GCV (see fit_smoothing).
   std::optional<double> smoothing;
   FitEnds ends = FitEnds::free;
+  /// Empty (all 1), or one w_i >= 0 per point multiplying its squared
+  /// residual (scipy's make_smoothing_spline w, not squared).
+  std::vector<double> weights;
 };
 
-/// The B-spline minimizing Σ ‖C(t_i) − P_i‖² + λ ∫_{t_0}^{t_m} ‖C''(u)‖² du.
+/// The B-spline minimizing Σ w_i ‖C(t_i) − P_i‖² + λ ∫_{t_0}^{t_m} ‖C''(u)‖² du
+/// (w_i = 1 without weights).
 /// The penalty's Gram matrix Ω_jk = ∫ N_j'' N_k'' is exact (Gauss–Legendre
 /// with p−1 nodes per knot span, Ω = Σ_q r_q r_qᵀ): the rows √λ r_q are
 /// rotated in beside the data's, so the penalized problem is least squares
