@@ -274,8 +274,7 @@ class FitSystem {
       const double weight = weight_of(row);
       if (weight == 0.0) continue;
       data_.add_row(first, values, std::span<const double>(target, d), std::sqrt(weight));
-      for (std::size_t r = 0; r <= p && first + r < free_count_; ++r)
-        for (std::size_t s = 0; s <= r; ++s) gram_.at(first + r, first + s) += weight * values[r] * values[s];
+      gram_.add_outer_product(first, values, weight);
     }
     if (with_penalty) {
       const PenaltyRows all = penalty_rows(knots_, degree);
@@ -287,8 +286,7 @@ class FitSystem {
         penalty_first_.push_back(first);
         penalty_values_.insert(penalty_values_.end(), values.begin(), values.end());
         penalty_targets_.insert(penalty_targets_.end(), target.begin(), target.end());
-        for (std::size_t r = 0; r <= p && first + r < free_count_; ++r)
-          for (std::size_t s = 0; s <= r; ++s) free_penalty_.at(first + r, first + s) += values[r] * values[s];
+        free_penalty_.add_outer_product(first, values, 1.0);
       }
     }
   }
@@ -665,7 +663,7 @@ std::optional<double> gcv_smoothing(const FitSystem& system, std::size_t point_c
   const double best_x = lower + static_cast<double>(best - scores.begin()) * step;
   const double a = std::max(best_x - step, lower), b = std::min(best_x + step, upper);
   const auto [x, value] = brent_minimum(at, a, b, best_x, *best, tolerances::kGcvRefinementDecades,
-                                        static_cast<int>(tolerances::kGcvBrentEvaluations));
+                                        tolerances::kGcvBrentEvaluations);
   return scale * std::pow(10.0, value <= *best ? x : best_x);
 }
 

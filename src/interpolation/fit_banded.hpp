@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cstddef>
+#include <span>
 #include <vector>
 
 
@@ -44,6 +45,14 @@ class SymmetricBand {
   std::size_t first_column(std::size_t row) const noexcept { return row + 1 >= width_ ? row + 1 - width_ : 0; }
   /// The last row of the band of column j (min(n - 1, j + p)).
   std::size_t last_row(std::size_t column) const noexcept { return std::min(size_ - 1, column + width_ - 1); }
+
+  /// Adds weight · v vᵀ for a row v of p+1 values over the columns first ..
+  /// first + p (those at or beyond n ignored): a design or penalty row's
+  /// share of BᵀWB or Ω.
+  void add_outer_product(std::size_t first, std::span<const double> v, double weight) noexcept {
+    for (std::size_t r = 0; r < v.size() && first + r < size_; ++r)
+      for (std::size_t s = 0; s <= r; ++s) at(first + r, first + s) += weight * v[r] * v[s];
+  }
 
   /// Σ_i a_ii: the trace.
   double trace() const noexcept {

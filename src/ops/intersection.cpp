@@ -599,14 +599,17 @@ template <class Skip>
   };
   std::size_t visited = 0;
   bool beyond_budget = false;  // visiting pairs outside the zones found
+  // Whether a pair may still hold a hit the search has not settled.
+  const auto unsettled = [&](const Pair& pair) {
+    return boxes_meet(pair.a, pair.b, tolerance) && !chords_apart(pair.a, pair.b, tolerance) &&
+           !skip(pair.s, pair.t) && !(beyond_budget && in_a_zone(pair));
+  };
   while (!stack.empty()) {
     if (++visited > tolerances::kIntersectionPairBudget) {
       if (beyond_budget || !any_tangent()) {
         // The latest pair still to settle: the narrowest, where the search was.
-        for (auto pair = stack.rbegin(); pair != stack.rend(); ++pair)
-          if (boxes_meet(pair->a, pair->b, tolerance) && !chords_apart(pair->a, pair->b, tolerance) &&
-              !skip(pair->s, pair->t) && !(beyond_budget && in_a_zone(*pair)))
-            return Unsettled{pair->s, pair->t};
+        const auto latest = std::find_if(stack.rbegin(), stack.rend(), unsettled);
+        if (latest != stack.rend()) return Unsettled{latest->s, latest->t};
         break;
       }
       beyond_budget = true;
@@ -614,9 +617,7 @@ template <class Skip>
     }
     Pair pair = std::move(stack.back());
     stack.pop_back();
-    if (!boxes_meet(pair.a, pair.b, tolerance) || chords_apart(pair.a, pair.b, tolerance)) continue;
-    if (skip(pair.s, pair.t)) continue;
-    if (beyond_budget && in_a_zone(pair)) continue;
+    if (!unsettled(pair)) continue;
     // Halved until narrow, or until both sub-curves rest within the
     // tolerance of a point (a stall: repeated control points, a cusp), where
     // every finer pair would be one more solution of the same zone (a

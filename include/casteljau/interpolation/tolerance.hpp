@@ -43,7 +43,7 @@ inline constexpr double kGcvSearchDecadesBeyond = 10.0;
 /// curve; Brent's method (parabolic steps) reaches it in about a dozen GCV
 /// evaluations from the grid's bracket, at most kGcvBrentEvaluations.
 inline constexpr double kGcvRefinementDecades = 1e-6;
-inline constexpr double kGcvBrentEvaluations = 60;
+inline constexpr int kGcvBrentEvaluations = 60;
 
 /// Smallest n − tr H (residual degrees of freedom) at which GCV is trusted.
 /// Near interpolation GCV = n RSS / (n − tr H)² is 0/0: both factors come
